@@ -1,0 +1,5 @@
+import sys
+
+from genparams.cli import main
+
+sys.exit(main())

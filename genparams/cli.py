@@ -1,0 +1,34 @@
+"""The ``genparams`` command: a thin shell over the commands in genparams.commands."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections.abc import Sequence
+
+from genparams import __version__
+from genparams.commands import generate, validate
+
+COMMANDS = (generate, validate)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="genparams",
+        description="Typed, validated ROS 2 parameters from a YAML schema.",
+    )
+    parser.add_argument("--version", action="version", version=f"genparams {__version__}")
+    subparsers = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+    for command in COMMANDS:
+        command.add_parser(subparsers)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    args = build_parser().parse_args(argv)
+    code: int = args.run(args)
+    return code
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,157 @@
+"""Safe YAML loading that remembers where every key and value came from.
+
+Returns plain Python data plus a table of source locations by document path.
+Mapping keys are always strings, taken as written (so ``on:`` stays "on").
+Duplicate keys are errors. Aliases are expanded within a fixed node budget,
+so an alias bomb fails fast instead of exhausting memory.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import yaml
+
+from genparams.errors import Location, SchemaError, SchemaProblem
+
+Path = tuple[str | int, ...]
+
+MAX_NODES = 1_000_000
+MAX_DEPTH = 64
+MAX_BYTES = 50_000_000
+
+_SafeLoader: type[yaml.SafeLoader] = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+
+
+@dataclass
+class LoadedDocument:
+    file: str
+    data: Any
+    key_locations: dict[Path, Location] = field(default_factory=dict)
+    value_locations: dict[Path, Location] = field(default_factory=dict)
+
+    def key_location(self, path: Path) -> Location:
+        """Where the key of ``path`` is written (falls back to its nearest ancestor)."""
+        return self._nearest(self.key_locations, path)
+
+    def value_location(self, path: Path) -> Location:
+        """Where the value at ``path`` starts (falls back to its nearest ancestor)."""
+        return self._nearest(self.value_locations, path)
+
+    def _nearest(self, table: dict[Path, Location], path: Path) -> Location:
+        while path:
+            if path in table:
+                return table[path]
+            path = path[:-1]
+        return table.get((), Location(self.file, 1, 1))
+
+
+def dotted(path: Path) -> str:
+    return ".".join(f"[{p}]" if isinstance(p, int) else p for p in path).replace(".[", "[")
+
+
+def load_yaml(text: str, file: str) -> LoadedDocument:
+    if len(text) > MAX_BYTES:
+        raise SchemaError(
+            [SchemaProblem(Location(file, 1, 1), "", f"file is larger than {MAX_BYTES} bytes")]
+        )
+    try:
+        root = yaml.compose(text, Loader=_SafeLoader)
+    except yaml.MarkedYAMLError as exc:
+        mark = exc.problem_mark or exc.context_mark
+        line, column = (mark.line + 1, mark.column + 1) if mark else (1, 1)
+        message = " ".join(str(part) for part in (exc.context, exc.problem) if part)
+        raise SchemaError(
+            [SchemaProblem(Location(file, line, column), "", f"invalid YAML: {message}")]
+        ) from None
+    except yaml.YAMLError as exc:
+        raise SchemaError(
+            [SchemaProblem(Location(file, 1, 1), "", f"invalid YAML: {exc}")]
+        ) from None
+    document = LoadedDocument(file, None)
+    if root is None:
+        return document
+    builder = _Builder(document)
+    document.value_locations[()] = builder.location(root)
+    document.data = builder.build(root, ())
+    if builder.problems:
+        raise SchemaError(builder.problems)
+    return document
+
+
+class _Builder:
+    def __init__(self, document: LoadedDocument) -> None:
+        self.document = document
+        self.problems: list[SchemaProblem] = []
+        self.nodes = 0
+        self.constructor = yaml.constructor.SafeConstructor()
+
+    def location(self, node: yaml.Node) -> Location:
+        return Location(self.document.file, node.start_mark.line + 1, node.start_mark.column + 1)
+
+    def build(self, node: yaml.Node, path: Path) -> Any:
+        self.nodes += 1
+        if self.nodes > MAX_NODES:
+            raise SchemaError(
+                [
+                    SchemaProblem(
+                        self.location(node),
+                        dotted(path),
+                        f"document expands to more than {MAX_NODES} nodes (an alias bomb?)",
+                    )
+                ]
+            )
+        if len(path) > MAX_DEPTH:
+            raise SchemaError(
+                [
+                    SchemaProblem(
+                        self.location(node), dotted(path), f"nested deeper than {MAX_DEPTH}"
+                    )
+                ]
+            )
+        if isinstance(node, yaml.MappingNode):
+            return self._mapping(node, path)
+        if isinstance(node, yaml.SequenceNode):
+            items = []
+            for index, child in enumerate(node.value):
+                child_path = (*path, index)
+                self.document.key_locations[child_path] = self.location(child)
+                self.document.value_locations[child_path] = self.location(child)
+                items.append(self.build(child, child_path))
+            return items
+        try:
+            return self.constructor.construct_object(node, deep=True)
+        except yaml.constructor.ConstructorError as exc:
+            self.problems.append(
+                SchemaProblem(self.location(node), dotted(path), f"invalid value: {exc.problem}")
+            )
+            return None
+
+    def _mapping(self, node: yaml.MappingNode, path: Path) -> dict[str, Any]:
+        result: dict[str, Any] = {}
+        for key_node, value_node in node.value:
+            if not isinstance(key_node, yaml.ScalarNode):
+                self.problems.append(
+                    SchemaProblem(
+                        self.location(key_node), dotted(path), "keys must be plain strings"
+                    )
+                )
+                continue
+            key = str(key_node.value)
+            child_path = (*path, key)
+            if key in result:
+                first = self.document.key_locations[child_path]
+                self.problems.append(
+                    SchemaProblem(
+                        self.location(key_node),
+                        dotted(child_path),
+                        "duplicate key "
+                        f"(first defined at line {first.line}, column {first.column})",
+                    )
+                )
+                continue
+            self.document.key_locations[child_path] = self.location(key_node)
+            self.document.value_locations[child_path] = self.location(value_node)
+            result[key] = self.build(value_node, child_path)
+        return result

@@ -1,0 +1,181 @@
+"""The typed, immutable model of a schema. Templates read it; they decide nothing.
+
+Source and target names sit side by side: ``ros_name`` (what ROS and params
+files see) and ``attribute`` / ``class_name`` (what Python code sees).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass
+from typing import Any
+
+from genparams.errors import Location
+from genparams.types import ParamType
+
+
+@dataclass(frozen=True)
+class RangeSpec:
+    min: int | float
+    max: int | float
+    step: int | float
+
+    def as_tuple(self) -> tuple[int | float, int | float, int | float]:
+        return (self.min, self.max, self.step)
+
+
+@dataclass(frozen=True)
+class ValidatorSpec:
+    rule: str
+    argument: Any  # JSON-like, lists made tuples
+    description: str  # plain words, e.g. "must be > 0"
+
+    def as_tuple(self) -> tuple[str, Any]:
+        return (self.rule, self.argument)
+
+
+@dataclass(frozen=True)
+class Parameter:
+    ros_name: str  # dotted, relative to the prefix: "camera.fps"
+    path: tuple[str, ...]
+    attribute: str  # Python attribute in its group
+    type: ParamType
+    default: Any  # typed-view value; None when required
+    required: bool
+    description: str
+    read_only: bool
+    unit: str
+    range: RangeSpec | None
+    choices: tuple[Any, ...] | None
+    validators: tuple[ValidatorSpec, ...]
+    additional_constraints: str
+    deprecated: str
+    location: Location
+
+    @property
+    def annotation(self) -> str:
+        return self.type.annotation
+
+    @property
+    def docstring(self) -> str:
+        """Hover text in IDEs: description, unit, default and constraints."""
+        lines = [self.description or self.ros_name]
+        facts = [f"Type: {self.type.name}."]
+        if self.unit:
+            facts.append(f"Unit: {self.unit}.")
+        facts.append("Required." if self.required else f"Default: {self.default!r}.")
+        if self.read_only:
+            facts.append("Read-only.")
+        if self.constraints_text:
+            facts.append(f"Constraints: {self.constraints_text}.")
+        if self.deprecated:
+            facts.append(f"Deprecated: {self.deprecated}")
+        lines.append(" ".join(facts))
+        return "\n\n".join(lines)
+
+    @property
+    def constraints_text(self) -> str:
+        """Human-readable constraints, also sent as the descriptor's additional_constraints."""
+        parts = []
+        if self.range is not None and self.type.is_array:
+            parts.append(f"every item within [{self.range.min!r}, {self.range.max!r}]")
+        if self.choices is not None:
+            parts.append("one of " + ", ".join(repr(c) for c in self.choices))
+        parts.extend(v.description for v in self.validators)
+        if self.additional_constraints:
+            parts.append(self.additional_constraints)
+        return "; ".join(parts)
+
+    @property
+    def spec_options(self) -> tuple[tuple[str, Any], ...]:
+        """Keyword arguments of the runtime ParamSpec that differ from their defaults."""
+        options: list[tuple[str, Any]] = []
+        if self.required:
+            options.append(("required", True))
+        else:
+            options.append(("default", self.default))
+        for key, value, empty in (
+            ("description", self.description, ""),
+            ("read_only", self.read_only, False),
+            ("unit", self.unit, ""),
+            ("range", self.range.as_tuple() if self.range else None, None),
+            ("choices", self.choices, None),
+            ("validators", tuple(v.as_tuple() for v in self.validators), ()),
+            ("additional_constraints", self.additional_constraints, ""),
+            ("deprecated", self.deprecated, ""),
+        ):
+            if value != empty:
+                options.append((key, value))
+        return tuple(options)
+
+
+@dataclass(frozen=True)
+class Field:
+    """One attribute of a generated class: a parameter or a nested group."""
+
+    attribute: str
+    annotation: str
+    docstring: str
+
+
+@dataclass(frozen=True)
+class Group:
+    ros_name: str  # dotted namespace, "" for the top level
+    path: tuple[str, ...]
+    attribute: str  # attribute in the parent group ("" for the top level)
+    class_name: str
+    parameters: tuple[Parameter, ...]
+    groups: tuple[Group, ...]
+
+    @property
+    def fields(self) -> tuple[Field, ...]:
+        fields = [Field(p.attribute, p.annotation, p.docstring) for p in self.parameters]
+        fields.extend(
+            Field(g.attribute, g.class_name, f"Namespace {g.ros_name}.") for g in self.groups
+        )
+        return tuple(sorted(fields, key=lambda f: f.attribute))
+
+    @property
+    def docstring(self) -> str:
+        return f"Parameters under {self.ros_name}." if self.ros_name else ""
+
+    @property
+    def slots(self) -> tuple[str, ...]:
+        return tuple(f.attribute for f in self.fields)
+
+    def walk_groups(self) -> Iterator[Group]:
+        """Every group below this one, children before parents (definition order)."""
+        for group in self.groups:
+            yield from group.walk_groups()
+            yield group
+
+    def walk_parameters(self) -> Iterator[Parameter]:
+        yield from self.parameters
+        for group in self.groups:
+            yield from group.walk_parameters()
+
+
+@dataclass(frozen=True)
+class Schema:
+    name: str
+    description: str
+    source_name: str  # file name of the schema, for the generated header
+    class_name: str
+    module_name: str
+    root: Group
+
+    @property
+    def nested_groups(self) -> tuple[Group, ...]:
+        return tuple(self.root.walk_groups())
+
+    @property
+    def parameters(self) -> tuple[Parameter, ...]:
+        return tuple(sorted(self.root.walk_parameters(), key=lambda p: p.ros_name))
+
+    @property
+    def docstring(self) -> str:
+        return self.description or f"Parameters of {self.name}."
+
+    @property
+    def class_names(self) -> tuple[str, ...]:
+        return tuple(sorted([self.class_name, *(g.class_name for g in self.nested_groups)]))

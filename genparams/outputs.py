@@ -1,0 +1,45 @@
+"""Writing generated text: all outputs computed first, then each replaced atomically."""
+
+from __future__ import annotations
+
+import difflib
+import os
+import tempfile
+from collections.abc import Mapping
+from pathlib import Path
+
+
+def write_all(outputs: Mapping[Path, str]) -> None:
+    for path, text in outputs.items():
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, temp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+        try:
+            with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as handle:
+                handle.write(text)
+            os.replace(temp, path)
+        except BaseException:
+            Path(temp).unlink(missing_ok=True)
+            raise
+
+
+def stale_diffs(outputs: Mapping[Path, str]) -> list[str]:
+    """A unified diff per output whose file on disk differs (or is missing)."""
+    diffs = []
+    for path, text in outputs.items():
+        try:
+            current = path.read_text(encoding="utf-8")
+        except FileNotFoundError:
+            diffs.append(f"{path}: missing (run genparams generate)\n")
+            continue
+        if current != text:
+            diffs.append(
+                "".join(
+                    difflib.unified_diff(
+                        current.splitlines(keepends=True),
+                        text.splitlines(keepends=True),
+                        fromfile=f"{path} (on disk)",
+                        tofile=f"{path} (generated)",
+                    )
+                )
+            )
+    return diffs

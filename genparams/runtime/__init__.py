@@ -1,0 +1,18 @@
+"""What generated modules import. Imports rclpy only when a class is declared on a node."""
+
+from genparams.runtime.changes import Change, Changes
+from genparams.runtime.errors import DetachedSnapshotError, ParameterDeclarationError
+from genparams.runtime.params import Params
+from genparams.runtime.spec import ParamSpec, SchemaSpec
+from genparams.runtime.tree import Group
+
+__all__ = [
+    "Change",
+    "Changes",
+    "DetachedSnapshotError",
+    "Group",
+    "ParamSpec",
+    "ParameterDeclarationError",
+    "Params",
+    "SchemaSpec",
+]

@@ -1,0 +1,68 @@
+"""The base class of every generated top-level class: declare, read, snapshot, subscribe."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from typing import TYPE_CHECKING, Any, ClassVar, Self
+
+from genparams.runtime.changes import Changes
+from genparams.runtime.errors import DetachedSnapshotError, ParameterDeclarationError
+from genparams.runtime.resolve import resolve_values
+from genparams.runtime.spec import SchemaSpec, compile_schema
+from genparams.runtime.tree import Group, build_tree, to_dict
+
+if TYPE_CHECKING:
+    from rclpy.node import Node
+
+    from genparams.runtime.binding import Binding
+
+
+class Params(Group):
+    """Typed, live view of a node's parameters (after ``declare``), or a frozen snapshot."""
+
+    __slots__ = ("_binding",)
+    _binding: Binding[Self] | None
+    _SPEC: ClassVar[SchemaSpec]
+
+    @classmethod
+    def declare(cls, node: Node, prefix: str = "") -> Self:
+        """Declare every parameter on ``node`` (under ``prefix``) and return the live view.
+
+        Raises ParameterDeclarationError listing every invalid or missing
+        override; in that case nothing is declared.
+        """
+        from genparams.runtime.binding import Binding
+
+        return Binding.declare(cls, node, prefix).live
+
+    @classmethod
+    def defaults(cls, overrides: Mapping[str, Any] | None = None) -> Self:
+        """A snapshot of the defaults (plus ``overrides`` by ROS name), without ROS."""
+        compiled = compile_schema(cls._SPEC)
+        values, problems = resolve_values(compiled, overrides or {})
+        unknown = sorted(set(overrides or {}) - set(compiled.parameters))
+        problems.extend(f"{name}: no such parameter" for name in unknown)
+        if problems:
+            raise ParameterDeclarationError(cls._SPEC.name, "defaults()", problems)
+        return build_tree(cls, cls._SPEC.groups, values, extra={"_binding": None})
+
+    def snapshot(self) -> Self:
+        """A frozen, consistent view of every value, O(1) whatever the number of parameters."""
+        binding = self._binding
+        return self if binding is None else binding.current
+
+    def on_change(self, callback: Callable[[Changes[Self]], None]) -> Callable[[], None]:
+        """Call ``callback`` after each accepted change of parameters this class owns.
+
+        Returns a function that unsubscribes.
+        """
+        binding = self._binding
+        if binding is None:
+            raise DetachedSnapshotError(
+                "on_change needs the live view returned by declare(), not a snapshot"
+            )
+        return binding.subscribe(callback)
+
+    def to_dict(self) -> dict[str, Any]:
+        """Every value as a nested dict keyed by ROS names."""
+        return to_dict(self)

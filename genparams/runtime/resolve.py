@@ -1,0 +1,47 @@
+"""Pick and check the starting value of every parameter: override, else default."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from typing import Any
+
+from genparams.runtime.spec import CompiledSchema
+from genparams.types import ValueTypeError
+
+
+def resolve_values(
+    compiled: CompiledSchema,
+    given: Mapping[str, Any],
+    full_name: Callable[[str], str] = lambda name: name,
+    source: str = "override",
+) -> tuple[dict[str, Any], list[str]]:
+    """Typed values for every parameter, and every problem found (all of them, not the first).
+
+    ``given`` maps relative names to values in ROS form (as rclpy holds them);
+    they are typed as strictly as ROS types them.
+    """
+    values: dict[str, Any] = {}
+    problems: list[str] = []
+    for name, param in compiled.parameters.items():
+        shown = full_name(name)
+        if name in given:
+            try:
+                value = param.type.from_ros(given[name])
+            except ValueTypeError as exc:
+                problems.append(f"{shown}: {source} has the wrong type: {exc}")
+                continue
+            origin = source
+        elif param.spec.required:
+            problems.append(
+                f"{shown}: required parameter is not set "
+                f"(pass -p {shown}:=<{param.type.name}> or set it in a params file)"
+            )
+            continue
+        else:
+            value, origin = param.type.coerce_default(param.spec.default), "default"
+        reason = param.check(value)
+        if reason is not None:
+            problems.append(f"{shown}: {origin} rejected: {reason}")
+            continue
+        values[name] = value
+    return values, problems

@@ -1,0 +1,123 @@
+"""Check a loaded document against schemas/genparams.schema.json, errors mapped to line/col."""
+
+from __future__ import annotations
+
+import difflib
+import functools
+import json
+from collections.abc import Iterator
+from typing import Any
+
+import jsonschema
+
+from genparams.errors import SchemaProblem
+from genparams.loader import LoadedDocument, Path, dotted
+from genparams.resources import resource_dir
+
+
+@functools.cache
+def _validator() -> jsonschema.Draft202012Validator:
+    schema = json.loads((resource_dir("schemas") / "genparams.schema.json").read_text("utf-8"))
+    return jsonschema.Draft202012Validator(schema)
+
+
+def did_you_mean(word: str, options: Any) -> str:
+    close = difflib.get_close_matches(word, sorted(options), n=1, cutoff=0.6)
+    return f" (did you mean {close[0]!r}?)" if close else ""
+
+
+def check_document(document: LoadedDocument) -> list[SchemaProblem]:
+    problems: list[SchemaProblem] = []
+    for error in _validator().iter_errors(document.data):
+        problems.extend(_problems(document, error))
+    return problems
+
+
+def _problems(
+    document: LoadedDocument, error: jsonschema.ValidationError
+) -> Iterator[SchemaProblem]:
+    path: Path = tuple(error.absolute_path)
+    schema = error.schema if isinstance(error.schema, dict) else {}
+    if error.validator == "additionalProperties" and isinstance(error.instance, dict):
+        allowed = set(schema.get("properties", {}))
+        for key in error.instance:
+            if key not in allowed:
+                key_path = (*path, key)
+                yield SchemaProblem(
+                    document.key_location(key_path),
+                    dotted(key_path),
+                    f"unknown key {key!r}{did_you_mean(key, allowed)}",
+                )
+        return
+    if error.validator == "required":
+        yield SchemaProblem(
+            document.key_location(path),
+            dotted(path),
+            error.message.replace("is a required property", "is required"),
+        )
+        return
+    if error.validator == "enum" and isinstance(error.instance, str):
+        options: list[Any] = list(error.validator_value)  # type: ignore[arg-type]
+        yield SchemaProblem(
+            document.value_location(path),
+            dotted(path),
+            f"{error.instance!r} is not one of {', '.join(map(str, options))}"
+            f"{did_you_mean(error.instance, options)}",
+        )
+        return
+    if error.validator == "anyOf" and len(path) >= 2 and path[-2] == "validators":
+        yield SchemaProblem(
+            document.value_location(path), dotted(path), _validator_message(error.instance)
+        )
+        return
+    if error.validator == "type" and path[:1] == ("parameters",) and schema.get("type") == "object":
+        yield SchemaProblem(
+            document.value_location(path),
+            dotted(path),
+            "expected a parameter (a mapping with 'type:') or a namespace (a mapping of "
+            f"parameters), got {json.dumps(error.instance, default=str)[:60]}",
+        )
+        return
+    yield SchemaProblem(document.value_location(path), dotted(path), _plain(error))
+
+
+def _validator_message(instance: Any) -> str:
+    from genparams.validators import KINDS
+
+    if isinstance(instance, str):
+        return f"unknown validator {instance!r}{did_you_mean(instance, KINDS)}"
+    if isinstance(instance, dict) and len(instance) == 1:
+        (name,) = instance
+        return f"unknown validator {name!r}{did_you_mean(str(name), KINDS)}"
+    return (
+        "a validator is a name (not_empty) or a single-key mapping ({gt: 0}), "
+        f"got {json.dumps(instance, default=str)[:60]}"
+    )
+
+
+def _plain(error: jsonschema.ValidationError) -> str:
+    if error.validator == "type":
+        return f"must be {_article(str(error.validator_value))}, got {_json(error.instance)}"
+    if error.validator == "const":
+        return (
+            f"must be {error.validator_value!r}, got {json.dumps(error.instance, default=str)[:60]}"
+        )
+    if error.validator == "pattern":
+        return f"{error.instance!r} must match {error.validator_value}"
+    return error.message
+
+
+def _json(value: Any) -> str:
+    return json.dumps(value, default=str)[:60]
+
+
+def _article(json_type: str) -> str:
+    names = {
+        "object": "a mapping",
+        "array": "a list",
+        "string": "a string",
+        "number": "a number",
+        "integer": "an integer",
+        "boolean": "true or false",
+    }
+    return names.get(json_type, json_type)

@@ -1,0 +1,160 @@
+"""The table of the nine ROS 2 parameter types: one row per type.
+
+Everything that depends on a parameter's type (the Python annotation of the
+typed view, the ROS ``ParameterType`` number, how a schema default or a ROS
+value is checked and converted) is read from this table. The module is pure
+Python so both the code generator and the runtime can use it.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+INT64_MIN = -(2**63)
+INT64_MAX = 2**63 - 1
+
+
+class ValueTypeError(ValueError):
+    """A value does not have the parameter's type."""
+
+
+@dataclass(frozen=True)
+class ParamType:
+    name: str  # schema spelling, e.g. "double_array"
+    ros_type: int  # rcl_interfaces/msg/ParameterType constant
+    ros_type_name: str  # e.g. "PARAMETER_DOUBLE_ARRAY"
+    annotation: str  # Python type of the typed view
+    element: str | None  # element kind for arrays: bool | int | double | string | byte
+    json_type: str  # JSON Schema type of a value
+
+    @property
+    def is_array(self) -> bool:
+        return self.element is not None
+
+    @property
+    def scalar_kind(self) -> str:
+        """The kind of a scalar, or of an array's elements."""
+        return self.element if self.element is not None else self.name
+
+    @property
+    def is_numeric(self) -> bool:
+        return self.scalar_kind in ("int", "double")
+
+    def coerce_default(self, value: Any) -> Any:
+        """Check a schema default and return it in typed-view form.
+
+        Schema defaults may spell a double as an integer (``30`` for ``30.0``);
+        values that reach the node follow ROS's stricter rules instead (see
+        :meth:`from_ros`).
+        """
+        return self._convert(value, lenient_double=True)
+
+    def from_ros(self, value: Any) -> Any:
+        """Convert a ROS parameter value to typed-view form, exactly as ROS types it."""
+        if self.is_array and isinstance(value, (list, tuple)) and len(value) == 0:
+            return b"" if self.element == "byte" else ()
+        return self._convert(value, lenient_double=False)
+
+    def to_ros(self, value: Any) -> Any:
+        """Convert a typed-view value to what ``rclpy.parameter.Parameter`` accepts."""
+        if self.element == "byte":
+            return [bytes((b,)) for b in value]
+        if self.is_array:
+            return list(value)
+        return value
+
+    def _convert(self, value: Any, *, lenient_double: bool) -> Any:
+        if self.element is None:
+            return _convert_scalar(self.name, value, lenient_double)
+        if self.element == "byte":
+            return _convert_bytes(value)
+        if not isinstance(value, (list, tuple)) and type(value).__name__ != "array":
+            raise ValueTypeError(f"expected {self.name}, got {_describe(value)}")
+        items = []
+        for index, item in enumerate(value):
+            try:
+                items.append(_convert_scalar(self.element, item, lenient_double))
+            except ValueTypeError as exc:
+                raise ValueTypeError(f"item {index}: {exc}") from None
+        return tuple(items)
+
+
+def _describe(value: Any) -> str:
+    kind = {bool: "bool", int: "integer", float: "double", str: "string"}.get(type(value))
+    if kind is None:
+        kind = type(value).__name__
+    text = repr(value)
+    if len(text) > 60:
+        text = text[:57] + "..."
+    return f"{kind} {text}"
+
+
+def _convert_scalar(kind: str, value: Any, lenient_double: bool) -> Any:
+    if kind == "bool":
+        if isinstance(value, bool):
+            return value
+    elif kind == "int":
+        if isinstance(value, int) and not isinstance(value, bool):
+            if not INT64_MIN <= value <= INT64_MAX:
+                raise ValueTypeError(f"integer {value} does not fit in int64")
+            return value
+    elif kind == "double":
+        if isinstance(value, float):
+            return value
+        if lenient_double and isinstance(value, int) and not isinstance(value, bool):
+            converted = float(value)
+            if math.isinf(converted):
+                raise ValueTypeError(f"integer {value} is too large for a double")
+            return converted
+        if isinstance(value, int) and not isinstance(value, bool):
+            raise ValueTypeError(
+                f"expected double, got integer {value} (ROS does not convert: write {value}.0)"
+            )
+    elif kind == "string":
+        if isinstance(value, str):
+            return value
+    raise ValueTypeError(f"expected {_SCALAR_NAMES[kind]}, got {_describe(value)}")
+
+
+def _convert_bytes(value: Any) -> bytes:
+    if isinstance(value, (bytes, bytearray)):
+        return bytes(value)
+    if isinstance(value, (list, tuple)):
+        out = bytearray()
+        for index, item in enumerate(value):
+            if isinstance(item, (bytes, bytearray)) and len(item) == 1:
+                out += item
+            elif isinstance(item, int) and not isinstance(item, bool) and 0 <= item <= 255:
+                out.append(item)
+            else:
+                raise ValueTypeError(
+                    f"item {index}: expected a byte (0..255), got {_describe(item)}"
+                )
+        return bytes(out)
+    raise ValueTypeError(f"expected byte_array, got {_describe(value)}")
+
+
+_SCALAR_NAMES = {"bool": "bool", "int": "integer", "double": "double", "string": "string"}
+
+TYPES: dict[str, ParamType] = {
+    t.name: t
+    for t in (
+        ParamType("bool", 1, "PARAMETER_BOOL", "bool", None, "boolean"),
+        ParamType("int", 2, "PARAMETER_INTEGER", "int", None, "integer"),
+        ParamType("double", 3, "PARAMETER_DOUBLE", "float", None, "number"),
+        ParamType("string", 4, "PARAMETER_STRING", "str", None, "string"),
+        ParamType("byte_array", 5, "PARAMETER_BYTE_ARRAY", "bytes", "byte", "array"),
+        ParamType("bool_array", 6, "PARAMETER_BOOL_ARRAY", "tuple[bool, ...]", "bool", "array"),
+        ParamType("int_array", 7, "PARAMETER_INTEGER_ARRAY", "tuple[int, ...]", "int", "array"),
+        ParamType(
+            "double_array", 8, "PARAMETER_DOUBLE_ARRAY", "tuple[float, ...]", "double", "array"
+        ),
+        ParamType(
+            "string_array", 9, "PARAMETER_STRING_ARRAY", "tuple[str, ...]", "string", "array"
+        ),
+    )
+}
+
+TYPES_BY_ROS_TYPE: dict[int, ParamType] = {t.ros_type: t for t in TYPES.values()}

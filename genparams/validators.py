@@ -1,0 +1,402 @@
+"""Built-in validators: small objects with one signature.
+
+A validator is called with a typed-view value and returns ``None`` when the
+value is valid, or a reason naming the rule when it is not. Each validator can
+also describe itself in plain words (for docs, descriptors and error
+messages). This module is pure Python: the code generator uses it to check
+schema defaults, the runtime to check every change.
+"""
+
+from __future__ import annotations
+
+import importlib
+import math
+import operator
+import re
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from typing import Any, Protocol
+
+# rclpy compares doubles against range bounds and steps with this tolerance.
+ROS_RELATIVE_TOLERANCE = 1e-6
+
+NUMERIC = frozenset({"int", "double"})
+NUMERIC_ARRAYS = frozenset({"int_array", "double_array"})
+ARRAYS = frozenset({"byte_array", "bool_array", "int_array", "double_array", "string_array"})
+SIZED = ARRAYS | {"string"}
+ALL_TYPES = SIZED | {"bool", "int", "double"}
+
+
+class Validator(Protocol):
+    @property
+    def rule(self) -> str: ...
+
+    def __call__(self, value: Any) -> str | None: ...
+
+    def describe(self) -> str: ...
+
+
+_COMPARISONS: dict[str, tuple[str, Callable[[Any, Any], bool]]] = {
+    "gt": (">", operator.gt),
+    "ge": (">=", operator.ge),
+    "lt": ("<", operator.lt),
+    "le": ("<=", operator.le),
+}
+
+
+def _fmt(value: Any) -> str:
+    text = repr(value)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+@dataclass(frozen=True)
+class Compare:
+    """``gt``, ``ge``, ``lt``, ``le`` against a number."""
+
+    rule: str
+    limit: float
+
+    def __call__(self, value: Any) -> str | None:
+        symbol, holds = _COMPARISONS[self.rule]
+        if holds(value, self.limit):  # NaN compares false, so it is rejected
+            return None
+        return f"must be {symbol} {self.limit!r} ({self.rule}), got {_fmt(value)}"
+
+    def describe(self) -> str:
+        return f"must be {_COMPARISONS[self.rule][0]} {self.limit!r}"
+
+
+@dataclass(frozen=True)
+class Bounds:
+    """Inclusive bounds; with ``each``, applied to every element of an array."""
+
+    low: float
+    high: float
+    each: bool = False
+    rule: str = "bounds"
+
+    def _check_one(self, value: Any) -> bool:
+        return bool(self.low <= value <= self.high)
+
+    def __call__(self, value: Any) -> str | None:
+        items = value if self.each else (value,)
+        for index, item in enumerate(items):
+            if not self._check_one(item):
+                where = f"item {index} " if self.each else ""
+                return (
+                    f"{where}must be within [{self.low!r}, {self.high!r}] ({self.rule}), "
+                    f"got {_fmt(item)}"
+                )
+        return None
+
+    def describe(self) -> str:
+        scope = "every item " if self.each else ""
+        return f"{scope}within [{self.low!r}, {self.high!r}]"
+
+
+@dataclass(frozen=True)
+class RosRange:
+    """The ``range:`` key, with exactly the semantics rclpy applies to descriptor ranges.
+
+    For arrays it applies to every element (ROS itself has no array ranges).
+    """
+
+    low: float
+    high: float
+    step: float
+    integer: bool
+    each: bool = False
+    rule: str = "range"
+
+    def _problem(self, value: Any) -> str | None:
+        if self.integer:
+            if not self.low <= value <= self.high:
+                return "out of range"
+            if self.step and (value - self.low) % self.step != 0:
+                return "not on a step"
+            return None
+        if math.isnan(value):
+            return "out of range"
+        tol = ROS_RELATIVE_TOLERANCE
+        at_edge = math.isclose(value, self.low, rel_tol=tol) or math.isclose(
+            value, self.high, rel_tol=tol
+        )
+        if not (self.low < value < self.high or at_edge):
+            return "out of range"
+        if self.step and not at_edge:
+            steps = round((value - self.low) / self.step)
+            if not math.isclose(self.low + steps * self.step, value, rel_tol=tol):
+                return "not on a step"
+        return None
+
+    def __call__(self, value: Any) -> str | None:
+        items = value if self.each else (value,)
+        for index, item in enumerate(items):
+            problem = self._problem(item)
+            if problem is not None:
+                where = f"item {index} " if self.each else ""
+                return f"{where}{_fmt(item)} is {problem}: {self.describe()}"
+        return None
+
+    def describe(self) -> str:
+        text = f"within [{self.low!r}, {self.high!r}]"
+        if self.step:
+            text += f" in steps of {self.step!r}"
+        return ("every item " if self.each else "") + text
+
+
+@dataclass(frozen=True)
+class OneOf:
+    choices: tuple[Any, ...]
+    rule: str = "one_of"
+
+    def __call__(self, value: Any) -> str | None:
+        if value in self.choices:
+            return None
+        return f"must be one of {_fmt(list(self.choices))} ({self.rule}), got {_fmt(value)}"
+
+    def describe(self) -> str:
+        return "one of " + ", ".join(_fmt(c) for c in self.choices)
+
+
+@dataclass(frozen=True)
+class SubsetOf:
+    choices: tuple[Any, ...]
+    rule: str = "subset_of"
+
+    def __call__(self, value: Any) -> str | None:
+        for index, item in enumerate(value):
+            if item not in self.choices:
+                return (
+                    f"item {index} must be one of {_fmt(list(self.choices))} ({self.rule}), "
+                    f"got {_fmt(item)}"
+                )
+        return None
+
+    def describe(self) -> str:
+        return "every item one of " + ", ".join(_fmt(c) for c in self.choices)
+
+
+@dataclass(frozen=True)
+class NotEmpty:
+    rule: str = "not_empty"
+
+    def __call__(self, value: Any) -> str | None:
+        return None if len(value) else f"must not be empty ({self.rule})"
+
+    def describe(self) -> str:
+        return "not empty"
+
+
+@dataclass(frozen=True)
+class Unique:
+    rule: str = "unique"
+
+    def __call__(self, value: Any) -> str | None:
+        seen: set[Any] = set()
+        for item in value:
+            if item in seen:
+                return f"must not repeat items ({self.rule}), {_fmt(item)} appears twice"
+            seen.add(item)
+        return None
+
+    def describe(self) -> str:
+        return "no repeated items"
+
+
+@dataclass(frozen=True)
+class Length:
+    min: int | None = None
+    max: int | None = None
+    rule: str = "length"
+
+    def __call__(self, value: Any) -> str | None:
+        size = len(value)
+        if (self.min is None or size >= self.min) and (self.max is None or size <= self.max):
+            return None
+        return f"length must be {self._bounds()} ({self.rule}), got {size}"
+
+    def _bounds(self) -> str:
+        if self.min == self.max:
+            return f"exactly {self.min}"
+        if self.max is None:
+            return f"at least {self.min}"
+        if self.min is None:
+            return f"at most {self.max}"
+        return f"between {self.min} and {self.max}"
+
+    def describe(self) -> str:
+        return f"length {self._bounds()}"
+
+
+@dataclass(frozen=True)
+class Pattern:
+    regex: str
+    rule: str = "pattern"
+    _compiled: re.Pattern[str] = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "_compiled", re.compile(self.regex))
+
+    def __call__(self, value: Any) -> str | None:
+        items = (value,) if isinstance(value, str) else value
+        for index, item in enumerate(items):
+            if self._compiled.search(item) is None:
+                where = "" if isinstance(value, str) else f"item {index} "
+                return f"{where}must match {self.regex!r} ({self.rule}), got {_fmt(item)}"
+        return None
+
+    def describe(self) -> str:
+        return f"matches {self.regex!r}"
+
+
+@dataclass(frozen=True)
+class Custom:
+    """A user function ``module:function`` taking the value, returning None or a reason."""
+
+    target: str
+    rule: str = "custom"
+
+    def resolve(self) -> Callable[[Any], Any]:
+        module_name, _, function_name = self.target.partition(":")
+        module = importlib.import_module(module_name)
+        function = getattr(module, function_name)
+        if not callable(function):
+            raise TypeError(f"{self.target} is not callable")
+        return function  # type: ignore[no-any-return]
+
+    def __call__(self, value: Any) -> str | None:
+        try:
+            outcome = self.resolve()(value)
+        except Exception as exc:  # a failing check must reject, never crash the service
+            return f"custom validator {self.target} raised {type(exc).__name__}: {exc}"
+        if outcome is None or outcome is True:
+            return None
+        if outcome is False:
+            return f"rejected by custom validator {self.target}"
+        return f"{outcome} ({self.target})"
+
+    def describe(self) -> str:
+        return f"passes {self.target}"
+
+
+@dataclass(frozen=True)
+class ValidatorKind:
+    """How one validator is spelled in a schema, what it applies to, how it is built."""
+
+    name: str
+    applies_to: frozenset[str]
+    build: Callable[[Any, str], Validator]  # (argument, parameter type) -> validator
+    takes_argument: bool = True
+
+
+class ValidatorArgumentError(ValueError):
+    pass
+
+
+def _number(arg: Any, what: str) -> float:
+    if isinstance(arg, bool) or not isinstance(arg, (int, float)):
+        raise ValidatorArgumentError(f"{what} must be a number, got {_fmt(arg)}")
+    return arg
+
+
+def _pair(arg: Any, what: str) -> tuple[float, float]:
+    if not isinstance(arg, (list, tuple)) or len(arg) != 2:
+        raise ValidatorArgumentError(f"{what} takes [low, high], got {_fmt(arg)}")
+    low, high = _number(arg[0], f"{what} low"), _number(arg[1], f"{what} high")
+    if low > high:
+        raise ValidatorArgumentError(f"{what} low {low!r} is greater than high {high!r}")
+    return low, high
+
+
+def _choices(arg: Any, what: str) -> tuple[Any, ...]:
+    if not isinstance(arg, (list, tuple)) or not arg:
+        raise ValidatorArgumentError(f"{what} takes a non-empty list, got {_fmt(arg)}")
+    return tuple(arg)
+
+
+def _length(arg: Any, _type: str) -> Length:
+    if isinstance(arg, int) and not isinstance(arg, bool):
+        if arg < 0:
+            raise ValidatorArgumentError(f"length must be >= 0, got {arg}")
+        return Length(arg, arg)
+    if isinstance(arg, dict) and arg and set(arg) <= {"min", "max", "exact"}:
+        for key, item in arg.items():
+            if isinstance(item, bool) or not isinstance(item, int) or item < 0:
+                raise ValidatorArgumentError(f"length {key} must be an integer >= 0")
+        if "exact" in arg:
+            if len(arg) > 1:
+                raise ValidatorArgumentError("length takes exact, or min and/or max, not both")
+            return Length(arg["exact"], arg["exact"])
+        low, high = arg.get("min"), arg.get("max")
+        if low is not None and high is not None and low > high:
+            raise ValidatorArgumentError(f"length min {low} is greater than max {high}")
+        return Length(low, high)
+    raise ValidatorArgumentError(f"length takes an integer or {{min, max, exact}}, got {_fmt(arg)}")
+
+
+def _pattern(arg: Any, _type: str) -> Pattern:
+    if not isinstance(arg, str):
+        raise ValidatorArgumentError(f"pattern must be a string, got {_fmt(arg)}")
+    try:
+        return Pattern(arg)
+    except re.error as exc:
+        raise ValidatorArgumentError(f"pattern {arg!r} is not a valid regex: {exc}") from None
+
+
+_CUSTOM_TARGET = re.compile(r"[A-Za-z_][\w]*(\.[A-Za-z_][\w]*)*:[A-Za-z_]\w*")
+
+
+def _custom(arg: Any, _type: str) -> Custom:
+    if not isinstance(arg, str) or not _CUSTOM_TARGET.fullmatch(arg):
+        raise ValidatorArgumentError(f"custom takes 'package.module:function', got {_fmt(arg)}")
+    return Custom(arg)
+
+
+def _compare(rule: str) -> Callable[[Any, str], Validator]:
+    return lambda arg, _type: Compare(rule, _number(arg, rule))
+
+
+KINDS: dict[str, ValidatorKind] = {
+    k.name: k
+    for k in (
+        ValidatorKind("gt", NUMERIC, _compare("gt")),
+        ValidatorKind("ge", NUMERIC, _compare("ge")),
+        ValidatorKind("lt", NUMERIC, _compare("lt")),
+        ValidatorKind("le", NUMERIC, _compare("le")),
+        ValidatorKind("bounds", NUMERIC, lambda a, _t: Bounds(*_pair(a, "bounds"))),
+        ValidatorKind(
+            "element_bounds",
+            NUMERIC_ARRAYS,
+            lambda a, _t: Bounds(*_pair(a, "element_bounds"), each=True, rule="element_bounds"),
+        ),
+        ValidatorKind(
+            "one_of",
+            frozenset({"int", "double", "string"}),
+            lambda a, _t: OneOf(_choices(a, "one_of")),
+        ),
+        ValidatorKind(
+            "subset_of",
+            frozenset({"int_array", "double_array", "string_array"}),
+            lambda a, _t: SubsetOf(_choices(a, "subset_of")),
+        ),
+        ValidatorKind("not_empty", SIZED, lambda _a, _t: NotEmpty(), takes_argument=False),
+        ValidatorKind("unique", ARRAYS, lambda _a, _t: Unique(), takes_argument=False),
+        ValidatorKind("length", SIZED, _length),
+        ValidatorKind("pattern", frozenset({"string", "string_array"}), _pattern),
+        ValidatorKind("custom", ALL_TYPES, _custom),
+    )
+}
+
+
+def build_validator(rule: str, argument: Any, param_type: str) -> Validator:
+    """Build one validator; raises ValidatorArgumentError or KeyError for unknown rules."""
+    return KINDS[rule].build(argument, param_type)
+
+
+def first_failure(validators: Sequence[Validator], value: Any) -> str | None:
+    for validator in validators:
+        reason = validator(value)
+        if reason is not None:
+            return reason
+    return None
