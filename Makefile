@@ -1,0 +1,41 @@
+# Every target that starts a node keeps DDS discovery on this machine.
+export ROS_AUTOMATIC_DISCOVERY_RANGE := LOCALHOST
+export ROS_DOMAIN_ID ?= $(shell python3 -c "import random; print(random.randint(1, 100))")
+
+VENV ?= .venv
+PYTHON := $(VENV)/bin/python
+EXAMPLE := examples/camera_node
+
+.PHONY: venv demo test check lint typecheck golden bench clean
+
+$(VENV)/.installed: pyproject.toml
+	python3 -m venv $(VENV)
+	$(PYTHON) -m pip install --quiet --upgrade pip
+	$(PYTHON) -m pip install --quiet -e ".[test]"
+	touch $@
+
+venv: $(VENV)/.installed
+
+## Generate the example's module and run the demo: a node in its own process, tuned over services.
+demo: venv
+	$(VENV)/bin/genparams generate $(EXAMPLE)/camera_driver.yaml -o $(EXAMPLE)/camera_node/camera_driver_params.py
+	$(PYTHON) $(EXAMPLE)/demo.py
+
+## Lint, type-check (package, examples and generated code) and run every test.
+test: venv lint typecheck
+	$(PYTHON) -m pytest -q
+
+lint: venv
+	$(PYTHON) -m ruff check .
+	$(PYTHON) -m ruff format --check genparams tests
+
+typecheck: venv
+	$(PYTHON) -m mypy genparams
+	cd $(EXAMPLE) && ../../$(PYTHON) -m mypy --config-file ../../pyproject.toml camera_node demo.py
+
+## Rewrite the golden files of tests/cases after an intended change of generated output.
+golden: venv
+	$(PYTHON) -m tests.update_golden
+
+clean:
+	rm -rf $(VENV) build dist .mypy_cache .ruff_cache .pytest_cache

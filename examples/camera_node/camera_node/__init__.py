@@ -1,0 +1,1 @@
+"""Example package: a camera driver node configured by genparams."""

@@ -1,0 +1,34 @@
+"""Shared fixtures. DDS stays on loopback, in a domain of its own per run."""
+
+from __future__ import annotations
+
+import os
+import random
+
+# Before rclpy is imported anywhere: discovery must never leave this machine.
+os.environ["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "LOCALHOST"
+os.environ.setdefault("ROS_DOMAIN_ID", str(random.SystemRandom().randint(1, 100)))
+
+from collections.abc import Iterator  # noqa: E402
+
+import pytest  # noqa: E402
+
+from tests.support import RosHarness  # noqa: E402
+
+
+@pytest.fixture(scope="session")
+def ros_harness() -> Iterator[RosHarness]:
+    harness = RosHarness()
+    try:
+        yield harness
+    finally:
+        harness.close()
+
+
+@pytest.fixture
+def ros(ros_harness: RosHarness) -> Iterator[RosHarness]:
+    """Per-test access to rclpy: nodes made here are destroyed after the test."""
+    try:
+        yield ros_harness
+    finally:
+        ros_harness.destroy_test_nodes()

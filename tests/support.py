@@ -1,0 +1,126 @@
+"""Test support: real rclpy nodes, a parameter-service client, generated modules on disk."""
+
+from __future__ import annotations
+
+import importlib.util
+import itertools
+import sys
+import types
+from pathlib import Path
+from typing import Any
+
+import rclpy
+from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
+from rclpy.context import Context
+from rclpy.executors import SingleThreadedExecutor
+from rclpy.node import Node
+from rclpy.parameter import Parameter, parameter_value_to_python
+from rclpy.parameter_client import AsyncParameterClient
+from rclpy.task import Future
+
+import genparams
+
+ROOT = Path(__file__).resolve().parent.parent
+CASES = Path(__file__).resolve().parent / "cases"
+_names = itertools.count()
+
+
+def unique_name(stem: str = "node") -> str:
+    return f"{stem}_{next(_names)}"
+
+
+class RosHarness:
+    """One rclpy context per test session; nodes per test; an executor to call services."""
+
+    def __init__(self) -> None:
+        self.context = Context()
+        rclpy.init(context=self.context)
+        self.executor = SingleThreadedExecutor(context=self.context)
+        self.client_node = Node(unique_name("param_client"), context=self.context)
+        self.executor.add_node(self.client_node)
+        self.nodes: list[Node] = []
+
+    def node(self, name: str | None = None, *, args: list[str] | None = None, **kwargs: Any) -> Node:
+        """A node served by the executor. ``args`` are ROS args, e.g. ["-p", "fps:=5.0"]."""
+        cli_args = ["--ros-args", *args] if args else None
+        node = Node(name or unique_name(), context=self.context, cli_args=cli_args, **kwargs)
+        self.executor.add_node(node)
+        self.nodes.append(node)
+        return node
+
+    def add_node(self, node: Node) -> Node:
+        self.executor.add_node(node)
+        self.nodes.append(node)
+        return node
+
+    def client(self, node: Node) -> ServiceClient:
+        return ServiceClient(self, node.get_fully_qualified_name())
+
+    def wait(self, future: Future, timeout: float = 10.0) -> Any:
+        self.executor.spin_until_future_complete(future, timeout_sec=timeout)
+        if not future.done():
+            raise TimeoutError("service call did not complete")
+        return future.result()
+
+    def destroy_test_nodes(self) -> None:
+        for node in self.nodes:
+            self.executor.remove_node(node)
+            node.destroy_node()
+        self.nodes.clear()
+
+    def close(self) -> None:
+        self.destroy_test_nodes()
+        self.executor.shutdown()
+        self.client_node.destroy_node()
+        rclpy.shutdown(context=self.context)
+
+
+class ServiceClient:
+    """What `ros2 param` sees: calls through the node's parameter services."""
+
+    def __init__(self, harness: RosHarness, target: str) -> None:
+        self.harness = harness
+        self.client = AsyncParameterClient(harness.client_node, target)
+        deadline_ok = False
+        for _ in range(100):
+            if self.client.services_are_ready():
+                deadline_ok = True
+                break
+            harness.executor.spin_once(timeout_sec=0.1)
+        if not deadline_ok:
+            raise TimeoutError(f"parameter services of {target} did not appear")
+
+    def get(self, *names: str) -> list[Any]:
+        response = self.harness.wait(self.client.get_parameters(list(names)))
+        return [parameter_value_to_python(v) for v in response.values]
+
+    def set(self, *parameters: Parameter) -> list[SetParametersResult]:
+        response = self.harness.wait(self.client.set_parameters(list(parameters)))
+        return list(response.results)
+
+    def set_atomically(self, *parameters: Parameter) -> SetParametersResult:
+        response = self.harness.wait(self.client.set_parameters_atomically(list(parameters)))
+        return response.result
+
+    def describe(self, *names: str) -> list[ParameterDescriptor]:
+        response = self.harness.wait(self.client.describe_parameters(list(names)))
+        return list(response.descriptors)
+
+
+def load_generated(schema: Path, tmp_path: Path) -> types.ModuleType:
+    """Generate ``schema`` into ``tmp_path`` and import it under a unique module name."""
+    text = genparams.generate(schema)
+    module_name = unique_name(f"gen_{schema.stem}")
+    path = tmp_path / f"{module_name}.py"
+    path.write_text(text, encoding="utf-8")
+    return import_file(path, module_name)
+
+
+def import_file(path: Path, module_name: str | None = None) -> types.ModuleType:
+    module_name = module_name or unique_name(path.stem)
+    spec = importlib.util.spec_from_file_location(module_name, path)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[module_name] = module
+    spec.loader.exec_module(module)
+    return module
