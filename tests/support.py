@@ -40,7 +40,9 @@ class RosHarness:
         self.executor.add_node(self.client_node)
         self.nodes: list[Node] = []
 
-    def node(self, name: str | None = None, *, args: list[str] | None = None, **kwargs: Any) -> Node:
+    def node(
+        self, name: str | None = None, *, args: list[str] | None = None, **kwargs: Any
+    ) -> Node:
         """A node served by the executor. ``args`` are ROS args, e.g. ["-p", "fps:=5.0"]."""
         cli_args = ["--ros-args", *args] if args else None
         node = Node(name or unique_name(), context=self.context, cli_args=cli_args, **kwargs)

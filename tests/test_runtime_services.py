@@ -29,14 +29,26 @@ def test_declared_values_match_node_and_service(ros: RosHarness, module: types.M
     through_service = client.get(*names)
     through_node = [node.get_parameter(n).value for n in names]
     through_cfg = [
-        cfg.camera.fps, cfg.camera.width, cfg.camera.encoding, list(cfg.topics), cfg.serial,
+        cfg.camera.fps,
+        cfg.camera.width,
+        cfg.camera.encoding,
+        list(cfg.topics),
+        cfg.serial,
         cfg.robot_name,
     ]
-    assert through_service == through_cfg == [
-        v if not isinstance(v, tuple) else list(v) for v in through_node
+    assert (
+        through_service
+        == through_cfg
+        == [v if not isinstance(v, tuple) else list(v) for v in through_node]
+    )
+    assert through_cfg == [
+        30.0,
+        640,
+        "rgb8",
+        ["/sensor/data", "/robot/status"],
+        "ABCD1234",
+        "my_robot",
     ]
-    assert through_cfg == [30.0, 640, "rgb8", ["/sensor/data", "/robot/status"], "ABCD1234",
-                           "my_robot"]
 
 
 def test_descriptor_carries_range_description_and_constraints(
@@ -47,8 +59,11 @@ def test_descriptor_carries_range_description_and_constraints(
     fps, encoding, robot = ros.client(node).describe("camera.fps", "camera.encoding", "robot_name")
     assert fps.type == Parameter.Type.DOUBLE.value
     assert fps.description == "Frame rate. [Hz]"
-    assert (fps.floating_point_range[0].from_value, fps.floating_point_range[0].to_value,
-            fps.floating_point_range[0].step) == (1.0, 120.0, 0.5)
+    assert (
+        fps.floating_point_range[0].from_value,
+        fps.floating_point_range[0].to_value,
+        fps.floating_point_range[0].step,
+    ) == (1.0, 120.0, 0.5)
     assert encoding.additional_constraints == "one of 'rgb8', 'mono8', 'bgr8'"
     assert robot.read_only is True
 
@@ -131,8 +146,9 @@ def test_on_change_reports_old_and_new_and_ignores_foreign_parameters(
 def test_bad_overrides_are_all_reported_and_nothing_declared(
     ros: RosHarness, module: types.ModuleType
 ) -> None:
-    node = ros.node(args=["-p", "camera.fps:=500.0", "-p", "camera.width:=12.5",
-                          "-p", "topics:=[a, a]"])
+    node = ros.node(
+        args=["-p", "camera.fps:=500.0", "-p", "camera.width:=12.5", "-p", "topics:=[a, a]"]
+    )
     with pytest.raises(ParameterDeclarationError) as caught:
         module.CameraDriverParams.declare(node)
     problems = caught.value.problems

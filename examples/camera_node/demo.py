@@ -31,8 +31,16 @@ def main() -> int:
     env = dict(os.environ, PYTHONPATH=f"{HERE}{os.pathsep}{os.environ.get('PYTHONPATH', '')}")
     print("$ python -m camera_node.node --ros-args -p serial:=CAM00042 -p camera.fps:=60.0")
     camera = subprocess.Popen(
-        [sys.executable, "-m", "camera_node.node", "--ros-args",
-         "-p", "serial:=CAM00042", "-p", "camera.fps:=60.0"],
+        [
+            sys.executable,
+            "-m",
+            "camera_node.node",
+            "--ros-args",
+            "-p",
+            "serial:=CAM00042",
+            "-p",
+            "camera.fps:=60.0",
+        ],
         env=env,
     )
     rclpy.init()
@@ -57,17 +65,33 @@ def main() -> int:
             verdict = "accepted" if result.successful else f"rejected: {result.reason}"
             print(f"set {parameter.name} = {parameter.value!r} -> {verdict}")
         atomic = [Parameter("camera.width", value=1280), Parameter("camera.height", value=-1)]
-        result = call(client_node, client.set_parameters_atomically(atomic)).result  # type: ignore[attr-defined]
+        response = call(client_node, client.set_parameters_atomically(atomic))
+        result = response.result  # type: ignore[attr-defined]
         verdict = "accepted" if result.successful else f"rejected: {result.reason}"
         print(f"set atomically width=1280, height=-1 -> {verdict}")
         values = call(client_node, client.get_parameters(names)).values  # type: ignore[attr-defined]
-        print("final:", {n: parameter_value_to_python(v) for n, v in zip(names, values, strict=True)})
+        print(
+            "final:", {n: parameter_value_to_python(v) for n, v in zip(names, values, strict=True)}
+        )
 
         print("\n$ python -m camera_node.node --ros-args -p camera.fps:=0.1 -p camera.width:=big")
         bad = subprocess.run(
-            [sys.executable, "-m", "camera_node.node", "--ros-args",
-             "-r", "__node:=camera_bad", "-p", "camera.fps:=0.1", "-p", "camera.width:=big"],
-            env=env, capture_output=True, text=True, timeout=60,
+            [
+                sys.executable,
+                "-m",
+                "camera_node.node",
+                "--ros-args",
+                "-r",
+                "__node:=camera_bad",
+                "-p",
+                "camera.fps:=0.1",
+                "-p",
+                "camera.width:=big",
+            ],
+            env=env,
+            capture_output=True,
+            text=True,
+            timeout=60,
         )
         print(bad.stderr.strip())
         print(f"(exit code {bad.returncode})")

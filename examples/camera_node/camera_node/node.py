@@ -7,6 +7,7 @@ import sys
 import rclpy
 from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
+from rclpy.utilities import try_shutdown
 
 from camera_node.camera_driver_params import CameraDriverParams
 from genparams.runtime import Changes, ParameterDeclarationError
@@ -42,7 +43,7 @@ def main(args: list[str] | None = None) -> int:
         pass
     finally:
         node.destroy_node()
-        rclpy.try_shutdown()
+        try_shutdown()
     return 0
 
 
