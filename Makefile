@@ -27,7 +27,7 @@ test: venv lint typecheck
 
 lint: venv
 	$(PYTHON) -m ruff check .
-	$(PYTHON) -m ruff format --check genparams tests
+	$(PYTHON) -m ruff format --check genparams tests examples
 
 typecheck: venv
 	$(PYTHON) -m mypy genparams

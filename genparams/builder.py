@@ -92,8 +92,9 @@ class _ModelBuilder:
             elif isinstance(value, dict):
                 child_class = self.group_class_name(child_path)
                 groups.append(self.group(value, key_path, child_path, child_attribute, child_class))
-        if not parameters and not groups and path:
-            self.problem(doc_path, "empty namespace: give it parameters or remove it")
+        if not parameters and not groups:
+            what = "namespace" if path else "schema"
+            self.problem(doc_path, f"empty {what}: give it parameters", at_key=True)
         return Group(
             ros_name=".".join(path),
             path=path,

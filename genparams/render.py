@@ -33,7 +33,7 @@ def python_literal(value: Any) -> str:
             return 'float("nan")'
         if math.isinf(value):
             return 'float("inf")' if value > 0 else 'float("-inf")'
-        return repr(value)
+        return repr(value).replace("e+", "e")  # ruff's spelling of exponents
     if isinstance(value, bytes):
         text = repr(value)
         if text.startswith("b'") and '"' not in text:
@@ -49,6 +49,57 @@ def python_literal(value: Any) -> str:
     raise TypeError(f"no Python literal for {type(value).__name__}")
 
 
+LINE_LENGTH = 100
+
+
+def _items(value: Any) -> tuple[str, str, list[Any]] | None:
+    """Brackets and items of a container literal, or None for a scalar."""
+    if isinstance(value, tuple) and value:
+        return "(", ")", list(value)
+    if isinstance(value, dict) and value:
+        return "{", "}", list(value.items())
+    return None
+
+
+def _item_literal(item: Any, is_dict: bool, indent: int) -> str:
+    if is_dict:
+        key, value = item
+        head = f"{python_literal(key)}: "
+        return head + wrapped_literal(value, indent, indent + len(head), 1)
+    return wrapped_literal(item, indent, indent, 1)
+
+
+def wrapped_literal(value: Any, indent: int, used: int, trailing: int) -> str:
+    """``python_literal`` laid out as ruff format lays it out at this position.
+
+    ``used`` is the column where the literal starts, ``trailing`` the characters
+    that follow it on its last line. Generated files are then stable under
+    ``ruff format``.
+    """
+    flat = python_literal(value)
+    container = _items(value)
+    if container is None or used + len(flat) + trailing <= LINE_LENGTH:
+        return flat
+    # A collection literal that does not fit gets one item per line (ruff, like black).
+    opening, closing, items = container
+    inner = indent + 4
+    is_dict = opening == "{"
+    lines = [f"{' ' * inner}{_item_literal(item, is_dict, inner)}," for item in items]
+    return opening + "\n" + "\n".join(lines) + f"\n{' ' * indent}{closing}"
+
+
+def keyword_argument(option: tuple[str, Any], indent: int) -> str:
+    """``key=value`` for a line at ``indent`` that ends with a comma."""
+    key, value = option
+    return f"{key}=" + wrapped_literal(value, indent, indent + len(key) + 1, 1)
+
+
+def assignment(value: Any, name: str, indent: int) -> str:
+    """``name = value`` for a line at ``indent``."""
+    head = f"{name} = "
+    return head + wrapped_literal(value, indent, indent + len(head), 0)
+
+
 @functools.cache
 def environment() -> jinja2.Environment:
     env = jinja2.Environment(
@@ -60,6 +111,8 @@ def environment() -> jinja2.Environment:
         autoescape=False,
     )
     env.filters["py"] = python_literal
+    env.filters["keyword_argument"] = keyword_argument
+    env.filters["assignment"] = assignment
     return env
 
 

@@ -22,12 +22,7 @@ __all__ = [
 class CameraGroup(_Group):
     "Parameters under camera."
 
-    __slots__ = (
-        "encoding",
-        "fps",
-        "height",
-        "width",
-    )
+    __slots__ = ("encoding", "fps", "height", "width")
 
     encoding: str
     "Pixel encoding.\n\nType: string. Default: 'rgb8'. Constraints: one of 'rgb8', 'mono8', 'bgr8'."
@@ -45,11 +40,7 @@ class CameraGroup(_Group):
 class ControlPidGroup(_Group):
     "Parameters under control.pid."
 
-    __slots__ = (
-        "kd",
-        "ki",
-        "kp",
-    )
+    __slots__ = ("kd", "ki", "kp")
 
     kd: float
     "Derivative gain.\n\nType: double. Default: 0.01. Constraints: must be >= 0.0."
@@ -73,13 +64,7 @@ class ControlGroup(_Group):
 class CameraDriverParams(_Params):
     "Camera driver with a PID exposure controller."
 
-    __slots__ = (
-        "camera",
-        "control",
-        "robot_name",
-        "serial",
-        "topics",
-    )
+    __slots__ = ("camera", "control", "robot_name", "serial", "topics")
 
     camera: CameraGroup
     "Namespace camera."
