@@ -8,8 +8,8 @@ so an alias bomb fails fast instead of exhausting memory.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 import re
+from dataclasses import dataclass, field
 from typing import Any
 
 import yaml
