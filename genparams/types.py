@@ -53,7 +53,9 @@ class ParamType:
 
     def from_ros(self, value: Any) -> Any:
         """Convert a ROS parameter value to typed-view form, exactly as ROS types it."""
-        if self.is_array and isinstance(value, (list, tuple)) and len(value) == 0:
+        # An empty list carries no element type (rclpy calls it BYTE_ARRAY), and rcl's
+        # params-file parser reads `[]` as NOT_SET (None): both mean "empty" for an array.
+        if self.is_array and (value is None or (isinstance(value, (list, tuple)) and not value)):
             return b"" if self.element == "byte" else ()
         return self._convert(value, lenient_double=False)
 

@@ -219,3 +219,14 @@ def test_defaults_without_ros(module: types.ModuleType) -> None:
     assert snap.camera.fps == 30.0 and snap.topics == ("/sensor/data", "/robot/status")
     with pytest.raises(AttributeError, match="read-only"):
         snap.camera.fps = 1.0
+
+
+def test_empty_list_in_params_file_is_an_empty_array(
+    ros: RosHarness, module: types.ModuleType, tmp_path: Path
+) -> None:
+    params = tmp_path / "params.yaml"
+    params.write_text("/**:\n  ros__parameters:\n    serial: ABCD1234\n    topics: []\n")
+    node = ros.node(args=["--params-file", str(params)])
+    with pytest.raises(ParameterDeclarationError) as caught:
+        module.CameraDriverParams.declare(node)
+    assert caught.value.problems == ("topics: override rejected: must not be empty (not_empty)",)
