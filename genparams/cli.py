@@ -7,9 +7,9 @@ import sys
 from collections.abc import Sequence
 
 from genparams import __version__
-from genparams.commands import generate, validate
+from genparams.commands import check_params, defaults, docs, generate, json_schema, validate
 
-COMMANDS = (generate, validate)
+COMMANDS = (generate, validate, docs, defaults, json_schema, check_params)
 
 
 def build_parser() -> argparse.ArgumentParser:

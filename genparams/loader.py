@@ -9,6 +9,7 @@ so an alias bomb fails fast instead of exhausting memory.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -64,6 +65,26 @@ def dotted(path: Path) -> str:
 
 
 def load_yaml(text: str, file: str) -> LoadedDocument:
+    """Load one YAML document; raises SchemaError on a syntax error or any duplicate key."""
+    document, problems = compose_yaml(text, file)
+    if problems:
+        raise SchemaError(problems)
+    return document
+
+
+ScalarReader = Callable[[yaml.ScalarNode], Any]
+
+
+def compose_yaml(
+    text: str, file: str, scalar: ScalarReader | None = None
+) -> tuple[LoadedDocument, list[SchemaProblem]]:
+    """Load one YAML document, returning the problems found (duplicate keys) beside it.
+
+    ``scalar`` turns each scalar node into a value; by default YAML's own safe
+    types are used. Readers that type scalars differently (ROS's params-file
+    parser does) pass their own. A syntax error still raises SchemaError: there
+    is no document to return.
+    """
     if len(text) > MAX_BYTES:
         raise SchemaError(
             [SchemaProblem(Location(file, 1, 1), "", f"file is larger than {MAX_BYTES} bytes")]
@@ -83,21 +104,20 @@ def load_yaml(text: str, file: str) -> LoadedDocument:
         ) from None
     document = LoadedDocument(file, None)
     if root is None:
-        return document
-    builder = _Builder(document)
+        return document, []
+    builder = _Builder(document, scalar)
     document.value_locations[()] = builder.location(root)
     document.data = builder.build(root, ())
-    if builder.problems:
-        raise SchemaError(builder.problems)
-    return document
+    return document, builder.problems
 
 
 class _Builder:
-    def __init__(self, document: LoadedDocument) -> None:
+    def __init__(self, document: LoadedDocument, scalar: ScalarReader | None) -> None:
         self.document = document
         self.problems: list[SchemaProblem] = []
         self.nodes = 0
         self.constructor = yaml.constructor.SafeConstructor()
+        self.scalar = scalar
 
     def location(self, node: yaml.Node) -> Location:
         return Location(self.document.file, node.start_mark.line + 1, node.start_mark.column + 1)
@@ -132,6 +152,8 @@ class _Builder:
                 self.document.value_locations[child_path] = self.location(child)
                 items.append(self.build(child, child_path))
             return items
+        if self.scalar is not None and isinstance(node, yaml.ScalarNode):
+            return self.scalar(node)
         try:
             return self.constructor.construct_object(node, deep=True)
         except yaml.constructor.ConstructorError as exc:

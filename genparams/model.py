@@ -12,6 +12,7 @@ from typing import Any
 
 from genparams.errors import Location
 from genparams.types import ParamType
+from genparams.validators import RosRange
 
 
 @dataclass(frozen=True)
@@ -66,12 +67,36 @@ class Parameter:
         facts.append("Required." if self.required else f"Default: {self.default!r}.")
         if self.read_only:
             facts.append("Read-only.")
-        if self.constraints_text:
-            facts.append(f"Constraints: {self.constraints_text}.")
+        if self.all_constraints_text:
+            facts.append(f"Constraints: {self.all_constraints_text}.")
         if self.deprecated:
             facts.append(f"Deprecated: {self.deprecated}")
         lines.append(" ".join(facts))
         return "\n\n".join(lines)
+
+    @property
+    def range_text(self) -> str:
+        """The range in the runtime's words: "within [1.0, 120.0] in steps of 0.5"."""
+        if self.range is None:
+            return ""
+        return RosRange(
+            self.range.min,
+            self.range.max,
+            self.range.step,
+            integer=self.type.scalar_kind == "int",
+            each=self.type.is_array,
+        ).describe()
+
+    @property
+    def all_constraints_text(self) -> str:
+        """Every constraint in plain words, the range included (for hover text and comments).
+
+        A scalar's range travels in the descriptor's range fields, so
+        ``constraints_text`` leaves it out; readers of docs need it all.
+        """
+        if self.range is None or self.type.is_array:
+            return self.constraints_text
+        return "; ".join(part for part in (self.range_text, self.constraints_text) if part)
 
     @property
     def constraints_text(self) -> str:

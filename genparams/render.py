@@ -8,8 +8,10 @@ from typing import Any
 
 import jinja2
 
-from genparams import __version__
+from genparams import __version__, markup
+from genparams.docs_model import DocsPage
 from genparams.model import Schema
+from genparams.params_file import ParamsFile
 from genparams.resources import resource_dir
 
 
@@ -113,9 +115,30 @@ def environment() -> jinja2.Environment:
     env.filters["py"] = python_literal
     env.filters["keyword_argument"] = keyword_argument
     env.filters["assignment"] = assignment
+    env.filters.update(
+        md_text=markup.md_text,
+        md_paragraphs=markup.md_paragraphs,
+        md_code=markup.md_code,
+        rst_text=markup.rst_text,
+        rst_literal=markup.rst_literal,
+        rst_heading=markup.rst_heading,
+    )
     return env
 
 
 def render_module(schema: Schema) -> str:
     template = environment().get_template("module.py.j2")
     return template.render(schema=schema, version=__version__)
+
+
+def render_params_file(params_file: ParamsFile) -> str:
+    return environment().get_template("params.yaml.j2").render(params_file=params_file)
+
+
+_DOCS_TEMPLATES = {"markdown": "docs.md.j2", "rst": "docs.rst.j2"}
+
+
+def render_docs(page: DocsPage, format: str) -> str:
+    """The documentation page in ``format``: "markdown" or "rst"."""
+    template = environment().get_template(_DOCS_TEMPLATES[format])
+    return template.render(page=page, params_file=page.default_params)

@@ -28,13 +28,13 @@ class CameraGroup(_Group):
     "Pixel encoding.\n\nType: string. Default: 'rgb8'. Constraints: one of 'rgb8', 'mono8', 'bgr8'."
 
     fps: float
-    "Frame rate.\n\nType: double. Unit: Hz. Default: 30.0."
+    "Frame rate.\n\nType: double. Unit: Hz. Default: 30.0. Constraints: within [1.0, 120.0] in steps of 0.5."
 
     height: int
-    "Image height.\n\nType: int. Unit: px. Default: 480."
+    "Image height.\n\nType: int. Unit: px. Default: 480. Constraints: within [48, 4096]."
 
     width: int
-    "Image width.\n\nType: int. Unit: px. Default: 640."
+    "Image width.\n\nType: int. Unit: px. Default: 640. Constraints: within [64, 4096]."
 
 
 class ControlPidGroup(_Group):

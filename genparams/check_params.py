@@ -1,0 +1,181 @@
+"""Check a deployment params file against a schema, offline, as the node would on start.
+
+Values go through the runtime's own type conversion (``ParamType.from_ros``)
+and checks (``CompiledParam.check``, built by ``compile_param`` from the same
+spec a generated module holds), so what passes here passes on the robot and
+what fails here makes the node refuse to start. On top, it finds what ROS
+ignores silently: unknown keys (typos) and sections that match no node.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import difflib
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from genparams.errors import Location, SchemaProblem
+from genparams.model import Schema
+from genparams.params_reader import ParamEntry, ParamsDocument, Section
+from genparams.ros_yaml import node_matches, ros_type_name
+from genparams.runtime.spec import CompiledParam
+from genparams.specs import compiled_param
+from genparams.types import ValueTypeError
+from genparams.validators import Custom
+
+# Parameters rclpy declares on every node, by type; and a namespace it owns.
+BUILTIN_PARAMETERS = {"use_sim_time": "bool", "start_type_description_service": "bool"}
+BUILTIN_PREFIXES = ("qos_overrides.",)
+
+
+@dataclass(frozen=True)
+class Report:
+    problems: tuple[SchemaProblem, ...]  # what makes the file wrong: exit 1
+    warnings: tuple[SchemaProblem, ...]  # worth knowing, not wrong (deprecation, unchecked rules)
+
+
+def check_params(schema: Schema, document: ParamsDocument, nodes: Sequence[str] = ()) -> Report:
+    """Check every section of ``document`` that applies to one of ``nodes``.
+
+    Without ``nodes``, every section is taken to be for this schema's node.
+    """
+    checker = _Checker(schema, document, tuple(nodes))
+    checker.run()
+    return Report(tuple(sorted(set(checker.problems))), tuple(sorted(set(checker.warnings))))
+
+
+class _Checker:
+    def __init__(self, schema: Schema, document: ParamsDocument, nodes: tuple[str, ...]) -> None:
+        self.schema = schema
+        self.document = document
+        self.nodes = nodes
+        self.problems: list[SchemaProblem] = list(document.problems)
+        self.warnings: list[SchemaProblem] = []
+        self.deprecated = {p.ros_name: p.deprecated for p in schema.parameters if p.deprecated}
+        self.params = {p.ros_name: self.offline(compiled_param(p)) for p in schema.parameters}
+
+    def offline(self, param: CompiledParam) -> CompiledParam:
+        """The checks that can run here: a custom validator whose module is missing is skipped."""
+        kept = []
+        for check in param.checks:
+            if isinstance(check, Custom):
+                try:
+                    check.resolve()
+                except Exception as exc:
+                    self.warnings.append(
+                        SchemaProblem(
+                            Location(self.document.file, 1, 1),
+                            param.name,
+                            f"warning: custom validator {check.target} not checked "
+                            f"(cannot import it here: {type(exc).__name__})",
+                        )
+                    )
+                    continue
+            kept.append(check)
+        return dataclasses.replace(param, checks=tuple(kept))
+
+    def run(self) -> None:
+        applied: list[Section] = []
+        for section in self.document.sections:
+            if self.nodes and not any(node_matches(section.node, n) for n in self.nodes):
+                self.problems.append(
+                    SchemaProblem(
+                        section.node_location,
+                        section.node,
+                        f"section matches no node given by --node ({', '.join(self.nodes)})",
+                    )
+                )
+                continue
+            applied.append(section)
+            for entry in section.entries:
+                self.entry(entry)
+        for node in self.nodes or ("",):
+            self.required(node, [s for s in applied if not node or node_matches(s.node, node)])
+
+    def entry(self, entry: ParamEntry) -> None:
+        param = self.params.get(entry.name)
+        if param is None:
+            self.unknown(entry)
+            return
+        if entry.name in self.deprecated:
+            self.warnings.append(
+                SchemaProblem(
+                    entry.key_location,
+                    entry.name,
+                    f"warning: deprecated: {self.deprecated[entry.name]}",
+                )
+            )
+        try:
+            value = param.type.from_ros(entry.value)
+        except ValueTypeError as exc:
+            message = f"wrong type: {exc}"
+            if entry.written_empty:
+                message = (
+                    'ROS reads an empty list as "not set", which the node refuses '
+                    f"({exc}); leave the parameter out to keep its default"
+                )
+            self.problems.append(SchemaProblem(entry.value_location, entry.name, message))
+            return
+        reason = param.check(value)
+        if reason is not None:
+            self.problems.append(SchemaProblem(entry.value_location, entry.name, reason))
+
+    def unknown(self, entry: ParamEntry) -> None:
+        builtin = BUILTIN_PARAMETERS.get(entry.name)
+        if builtin is not None:
+            if not isinstance(entry.value, bool):
+                got = "nothing" if entry.value is None else _shown(entry.value)
+                self.problems.append(
+                    SchemaProblem(
+                        entry.value_location,
+                        entry.name,
+                        f"wrong type: expected {builtin}, got {got}",
+                    )
+                )
+            return
+        if entry.name.startswith(BUILTIN_PREFIXES):
+            return
+        hint = suggestion(entry.name, [*self.params, *BUILTIN_PARAMETERS])
+        self.problems.append(
+            SchemaProblem(
+                entry.key_location,
+                entry.name,
+                f"unknown parameter{hint}: ROS would ignore it",
+            )
+        )
+
+    def required(self, node: str, sections: list[Section]) -> None:
+        given = {entry.name for section in sections for entry in section.entries}
+        where = sections[-1].params_location if sections else Location(self.document.file, 1, 1)
+        for name, param in self.params.items():
+            if param.spec.required and name not in given:
+                for_node = f" for {node}" if node else ""
+                self.problems.append(
+                    SchemaProblem(
+                        where,
+                        name,
+                        f"required parameter is not set{for_node} "
+                        f"(it has no default: add {name.rsplit('.', 1)[-1]}: "
+                        f"<{param.type.name}>)",
+                    )
+                )
+
+
+def _shown(value: object) -> str:
+    if isinstance(value, (bool, int, float, str)):
+        return f"{ros_type_name(value)} {value!r}"
+    return f"a list {value!r}"
+
+
+def suggestion(name: str, candidates: Sequence[str]) -> str:
+    """`` (did you mean 'camera.fps'?)`` for a misspelt or misplaced name, else ""."""
+    last = name.rsplit(".", 1)[-1]
+    same_leaf = [c for c in candidates if c.rsplit(".", 1)[-1] == last]
+    if len(same_leaf) == 1:
+        return f" (did you mean {same_leaf[0]!r}?)"
+    close = difflib.get_close_matches(name, sorted(candidates), n=1, cutoff=0.6)
+    if not close:
+        leaves = {c.rsplit(".", 1)[-1]: c for c in sorted(candidates)}
+        near = difflib.get_close_matches(last, sorted(leaves), n=1, cutoff=0.75)
+        close = [leaves[near[0]]] if near else []
+    return f" (did you mean {close[0]!r}?)" if close else ""

@@ -1,0 +1,28 @@
+"""What the commands share: loading one schema, writing one output."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+from genparams.api import load_schema
+from genparams.errors import SchemaError
+from genparams.model import Schema
+from genparams.outputs import write_all
+
+
+def schema_or_none(path: Path) -> Schema | None:
+    """The schema, or None after printing every problem with it (the caller exits 2)."""
+    try:
+        return load_schema(path)
+    except SchemaError as exc:
+        print(exc, file=sys.stderr)
+        return None
+
+
+def emit(text: str, output: Path | None) -> None:
+    """Write to ``output`` atomically, or to stdout."""
+    if output is None:
+        sys.stdout.write(text)
+    else:
+        write_all({output: text})

@@ -1,0 +1,100 @@
+"""What a schema's documentation page says, decided here; the templates only write it out.
+
+Constraints are worded by the runtime's own validators (``describe()``), so the
+page states exactly the rules a node enforces. The "Default configuration"
+block is the default params file itself (see params_file).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass
+
+from genparams import __version__
+from genparams.model import Group, Parameter, Schema
+from genparams.params_file import ParamsFile, default_params_file
+from genparams.specs import compiled_param
+from genparams.yaml_text import value_text
+
+FORMATS = ("markdown", "rst")
+
+
+@dataclass(frozen=True)
+class ParameterDoc:
+    name: str  # full dotted ROS name
+    type_name: str
+    default: str  # as written in a params file; "" when required
+    unit: str
+    constraints: tuple[str, ...]  # plain words: range and step, choices, every validator
+    description: str
+    required: bool
+    read_only: bool
+    deprecated: str  # "" unless deprecated: what to use instead
+
+
+@dataclass(frozen=True)
+class NamespaceDoc:
+    name: str  # dotted namespace, "" for the top level
+    parameters: tuple[ParameterDoc, ...]
+
+    @property
+    def is_top_level(self) -> bool:
+        return not self.name
+
+
+@dataclass(frozen=True)
+class DocsPage:
+    title: str
+    description: str
+    class_name: str
+    module_name: str
+    source_name: str
+    version: str
+    namespaces: tuple[NamespaceDoc, ...]
+    default_params: ParamsFile
+
+    @property
+    def has_required(self) -> bool:
+        return any(p.required for ns in self.namespaces for p in ns.parameters)
+
+
+def docs_page(schema: Schema) -> DocsPage:
+    return DocsPage(
+        title=schema.name,
+        description=schema.description,
+        class_name=schema.class_name,
+        module_name=schema.module_name,
+        source_name=schema.source_name,
+        version=__version__,
+        namespaces=tuple(
+            NamespaceDoc(group.ros_name, tuple(parameter_doc(p) for p in group.parameters))
+            for group in _documented_groups(schema.root)
+        ),
+        default_params=default_params_file(schema, comments=False),
+    )
+
+
+def _documented_groups(group: Group) -> Iterator[Group]:
+    """Groups holding parameters, each before its children, in schema order."""
+    if group.parameters:
+        yield group
+    for child in group.groups:
+        yield from _documented_groups(child)
+
+
+def parameter_doc(parameter: Parameter) -> ParameterDoc:
+    checks = compiled_param(parameter).checks
+    constraints = [check.describe() for check in checks]
+    if parameter.additional_constraints:
+        constraints.append(parameter.additional_constraints)
+    return ParameterDoc(
+        name=parameter.ros_name,
+        type_name=parameter.type.name,
+        default="" if parameter.required else value_text(parameter.default, parameter.type),
+        unit=parameter.unit,
+        constraints=tuple(constraints),
+        description=parameter.description,
+        required=parameter.required,
+        read_only=parameter.read_only,
+        deprecated=parameter.deprecated,
+    )
