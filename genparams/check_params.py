@@ -89,6 +89,8 @@ class _Checker:
             applied.append(section)
             for entry in section.entries:
                 self.entry(entry)
+        if self.document.problems and not self.document.sections:
+            return  # nothing could be read: a list of every required parameter adds only noise
         for node in self.nodes or ("",):
             self.required(node, [s for s in applied if not node or node_matches(s.node, node)])
 
@@ -111,8 +113,8 @@ class _Checker:
             message = f"wrong type: {exc}"
             if entry.written_empty:
                 message = (
-                    'ROS reads an empty list as "not set", which the node refuses '
-                    f"({exc}); leave the parameter out to keep its default"
+                    'ROS reads an empty list as "not set", which the node refuses: '
+                    "leave the parameter out to keep its default"
                 )
             self.problems.append(SchemaProblem(entry.value_location, entry.name, message))
             return

@@ -16,7 +16,7 @@ from typing import Any
 import yaml
 
 from genparams.errors import Location, SchemaError, SchemaProblem
-from genparams.loader import LoadedDocument, Path, compose_yaml
+from genparams.loader import LoadedDocument, Path, compose_yaml, dotted
 from genparams.ros_yaml import (
     PARAMS_KEY,
     NoValue,
@@ -62,10 +62,17 @@ def read_params_file(text: str, file: str) -> ParamsDocument:
     except SchemaError as exc:
         return ParamsDocument(file, (), exc.problems)
     reader = _Reader(document)
-    reader.problems.extend(duplicates)
+    reader.problems.extend(_as_parameter_problem(p) for p in duplicates)
     reader.problems.extend(aliases)
     reader.read()
     return ParamsDocument(file, tuple(reader.sections), tuple(reader.problems))
+
+
+def _as_parameter_problem(problem: SchemaProblem) -> SchemaProblem:
+    """A duplicate key named as ROS names the parameter, with what ROS does about it."""
+    _, marker, name = problem.key.partition(f".{PARAMS_KEY}.")
+    key = name if marker else problem.key
+    return SchemaProblem(problem.location, key, f"{problem.message}; ROS keeps the later value")
 
 
 def _ros_scalar(node: yaml.ScalarNode) -> Any:
@@ -127,12 +134,16 @@ class _Reader:
             elif isinstance(value, dict):
                 self.node_level(value, key_path, (*names, key))
             else:
-                node = "/".join((*names, key))
+                where_to = (
+                    f"under {absolute('/'.join(names))}: {{{PARAMS_KEY}: ...}}"
+                    if names
+                    else f"under /node_name: {{{PARAMS_KEY}: ...}}"
+                )
                 self.problem(
                     self.document.value_location(key_path),
-                    node,
-                    f"a value where ROS expects {PARAMS_KEY} or a node name: ROS refuses the "
-                    f"file (write {node}: {{{PARAMS_KEY}: {{...}}}})",
+                    dotted(key_path),
+                    f"a value outside {PARAMS_KEY}: ROS refuses the file "
+                    f"(parameters go {where_to})",
                 )
 
     def section(self, key_path: Path, names: tuple[str, ...], value: Any) -> None:

@@ -1,0 +1,110 @@
+"""Golden files: what each case folder expects, computed the one way tests compare it."""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+import os
+from collections.abc import Iterator
+from dataclasses import dataclass
+from pathlib import Path
+
+from genparams.api import load_schema
+from genparams.cli import main
+from genparams.docs_model import docs_page
+from genparams.json_schema import params_file_schema
+from genparams.params_file import default_params_file
+from genparams.render import render_docs, render_params_file
+
+TESTS = Path(__file__).resolve().parent
+ROOT = TESTS.parent
+EXAMPLE_SCHEMA = ROOT / "examples" / "camera_node" / "camera_driver.yaml"
+OUTPUT_CASES = TESTS / "output_cases"
+CHECK_PARAMS_CASES = TESTS / "check_params_cases"
+
+
+@dataclass(frozen=True)
+class OutputCase:
+    """A schema and the folder holding its golden outputs, each named after the schema."""
+
+    schema: Path
+    folder: Path
+
+    @property
+    def name(self) -> str:
+        return self.folder.name if self.folder.parent == OUTPUT_CASES else "example"
+
+    def golden(self, kind: str) -> Path:
+        return self.folder / f"{load_schema(self.schema).name}{SUFFIXES[kind]}"
+
+
+SUFFIXES = {
+    "markdown": ".md",
+    "rst": ".rst",
+    "defaults": ".params.yaml",
+    "json-schema": ".schema.json",
+}
+
+
+def output_cases() -> list[OutputCase]:
+    """The example (its docs are committed beside it) and every folder of tests/output_cases."""
+    cases = [OutputCase(EXAMPLE_SCHEMA, EXAMPLE_SCHEMA.parent / "docs")]
+    for folder in sorted(OUTPUT_CASES.iterdir()):
+        if (folder / "schema.yaml").is_file():
+            cases.append(OutputCase(folder / "schema.yaml", folder))
+    return cases
+
+
+def check_params_cases() -> list[Path]:
+    return sorted(p for p in CHECK_PARAMS_CASES.iterdir() if (p / "params.yaml").is_file())
+
+
+def outputs(case: OutputCase) -> dict[str, str]:
+    """Every output genparams makes from a case's schema, by kind."""
+    schema = load_schema(case.schema)
+    page = docs_page(schema)
+    return {
+        "markdown": render_docs(page, "markdown"),
+        "rst": render_docs(page, "rst"),
+        "defaults": render_params_file(default_params_file(schema)),
+        "json-schema": json.dumps(params_file_schema(schema), indent=2, ensure_ascii=False) + "\n",
+    }
+
+
+def case_arguments(case: Path) -> list[str]:
+    args = case / "args.txt"
+    return args.read_text(encoding="utf-8").split() if args.is_file() else []
+
+
+def case_schema(case: Path) -> Path:
+    own = case / "schema.yaml"
+    return own if own.is_file() else EXAMPLE_SCHEMA
+
+
+@contextlib.contextmanager
+def _inside(folder: Path) -> Iterator[None]:
+    before = Path.cwd()
+    os.chdir(folder)
+    try:
+        yield
+    finally:
+        os.chdir(before)
+
+
+def check_params_output(case: Path) -> tuple[int, str]:
+    """Exit code and output of ``genparams check-params`` run inside the case folder."""
+    out = io.StringIO()
+    with _inside(case), contextlib.redirect_stdout(out):
+        code = main(["check-params", str(case_schema(case)), "params.yaml", *case_arguments(case)])
+    return code, out.getvalue()
+
+
+def update() -> None:
+    for case in output_cases():
+        case.folder.mkdir(exist_ok=True)
+        for kind, text in outputs(case).items():
+            case.golden(kind).write_text(text, encoding="utf-8")
+    for case in check_params_cases():
+        _code, text = check_params_output(case)
+        (case / "expected.txt").write_text(text, encoding="utf-8")
