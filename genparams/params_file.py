@@ -4,18 +4,20 @@ Loading the file with ``--params-file`` into a node that declares the generated
 class changes nothing: every default is spelled so ROS reads it back with its
 declared type (see yaml_text). Two kinds of parameter cannot be written and are
 left commented out, with the reason beside them: required parameters (they
-have no default; the node does not start until one is given) and empty lists
-(ROS reads ``[]`` as "not set", which the node refuses).
+have no default; the node does not start until one is given), empty lists
+(ROS reads ``[]`` as "not set", which the node refuses) and subnormal doubles
+(ROS reads them as strings).
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 from genparams import __version__
 from genparams.model import Group, Parameter, Schema
-from genparams.ros_yaml import PARAMS_KEY, absolute, node_pattern_problem
-from genparams.yaml_text import comment_lines, key_text, node_key_text, value_text
+from genparams.ros_yaml import PARAMS_KEY, absolute, node_pattern_problem, ros_scalar
+from genparams.yaml_text import comment_lines, double_text, key_text, node_key_text, value_text
 
 ALL_NODES = "/**"
 _STEP = "  "
@@ -91,7 +93,23 @@ def _parameter_entry(parameter: Parameter, indent: str, comments: bool) -> Entry
             "refuses: leave it out to keep the default.",
         )
         return Entry(indent, key, "[]", (*notes, *why), disabled=True)
-    return Entry(indent, key, value_text(parameter.default, parameter.type), notes, disabled=False)
+    text = value_text(parameter.default, parameter.type)
+    if not _reads_back(parameter):
+        why = (f"Default: {text}. ROS reads this number back as a string: it cannot be written.",)
+        return Entry(indent, key, text, (*notes, *why), disabled=True)
+    return Entry(indent, key, text, notes, disabled=False)
+
+
+def _reads_back(parameter: Parameter) -> bool:
+    """Whether ROS reads the written default back as the same value.
+
+    Only doubles can fail: ROS's parser keeps subnormal numbers (below about
+    2.2e-308) as strings.
+    """
+    if parameter.type.scalar_kind != "double":
+        return True
+    values = parameter.default if parameter.type.is_array else (parameter.default,)
+    return all(ros_scalar(double_text(v), None) == v or math.isnan(v) for v in values)
 
 
 def parameter_comment(parameter: Parameter) -> tuple[str, ...]:
