@@ -146,8 +146,7 @@ def parameter_schema(parameter: Parameter) -> dict[str, Any]:
             if kind == "byte"
             else {"type": _JSON_TYPES[kind]}
         )
-        # ROS reads an empty list as "not set", which the node refuses.
-        result: dict[str, Any] = {"type": "array", "items": items, "minItems": 1}
+        result: dict[str, Any] = {"type": "array", "items": items}
     else:
         result = {"type": _JSON_TYPES[kind]}
     for check in compiled_param(parameter).checks:

@@ -2,11 +2,11 @@
 
 Loading the file with ``--params-file`` into a node that declares the generated
 class changes nothing: every default is spelled so ROS reads it back with its
-declared type (see yaml_text). Two kinds of parameter cannot be written and are
-left commented out, with the reason beside them: required parameters (they
-have no default; the node does not start until one is given), empty lists
-(ROS reads ``[]`` as "not set", which the node refuses) and subnormal doubles
-(ROS reads them as strings).
+declared type (see yaml_text); an empty list is written ``[]``, which ROS reads
+as "not set" and the runtime as an empty array of the declared type. Two kinds
+of parameter cannot be written and are left commented out, with the reason
+beside them: required parameters (they have no default; the node does not
+start until one is given) and subnormal doubles (ROS reads them as strings).
 """
 
 from __future__ import annotations
@@ -87,12 +87,6 @@ def _parameter_entry(parameter: Parameter, indent: str, comments: bool) -> Entry
     if parameter.required:
         why = (f"Required {parameter.type.name}: no default; the node does not start without it.",)
         return Entry(indent, key, "", (*notes, *why), disabled=True)
-    if parameter.type.is_array and len(parameter.default) == 0:
-        why = (
-            'Default: empty. ROS reads [] in a params file as "not set", which the node '
-            "refuses: leave it out to keep the default.",
-        )
-        return Entry(indent, key, "[]", (*notes, *why), disabled=True)
     text = value_text(parameter.default, parameter.type)
     if not _reads_back(parameter):
         why = (f"Default: {text}. ROS reads this number back as a string: it cannot be written.",)
