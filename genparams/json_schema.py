@@ -106,19 +106,23 @@ def _group_schema(group: Group, *, required: bool) -> dict[str, Any]:
     properties: dict[str, Any] = {}
     if not group.ros_name:
         properties.update(BUILTIN_PARAMETERS)
-    musts: list[dict[str, Any]] = []
+    required_here: list[str] = []
+    required_below: list[dict[str, Any]] = []
     for path, item in _descendants(group):
         key = ".".join(path)
         if isinstance(item, Group):
             properties[key] = {"$ref": _group_ref(item)}
             continue
         properties[key] = {"$ref": f"#/$defs/{_parameter_name(item)}"}
-        if required and item.required:
-            # Written whole ("a.b.c") or under any of its namespaces, whose own schema
-            # then requires the rest.
-            musts.append(
-                {"anyOf": [{"required": [".".join(path[:n])]} for n in range(1, len(path) + 1)]}
-            )
+        if not (required and item.required):
+            continue
+        if len(path) == 1:
+            required_here.append(key)
+        else:
+            # Written whole ("a.b.c") or under one of its namespaces ("a", "a.b"), whose
+            # own schema then requires the rest.
+            prefixes = [".".join(path[:n]) for n in range(1, len(path) + 1)]
+            required_below.append({"anyOf": [{"required": [prefix]} for prefix in prefixes]})
     result: dict[str, Any] = {
         "type": "object",
         "description": f"Parameters under {group.ros_name}." if group.ros_name else "Parameters.",
@@ -127,12 +131,10 @@ def _group_schema(group: Group, *, required: bool) -> dict[str, Any]:
     }
     if not group.ros_name:
         result["patternProperties"] = {"^qos_overrides\\.": {}}
-    simple = [m["anyOf"][0]["required"][0] for m in musts if len(m["anyOf"]) == 1]
-    if simple:
-        result["required"] = simple
-    nested = [m for m in musts if len(m["anyOf"]) > 1]
-    if nested:
-        result["allOf"] = nested
+    if required_here:
+        result["required"] = required_here
+    if required_below:
+        result["allOf"] = required_below
     return result
 
 
