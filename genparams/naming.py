@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import keyword
 import re
+from collections.abc import Sequence
 
 # One token of a ROS parameter name. ROS also accepts a leading underscore;
 # genparams reserves those for the generated classes' internals.
@@ -19,6 +20,34 @@ RESERVED_TOP_LEVEL = frozenset(
 
 def is_ros_token(name: str) -> bool:
     return ROS_TOKEN.fullmatch(name) is not None
+
+
+def is_ros_name(name: str) -> bool:
+    """A dotted ROS parameter name relative to a prefix: tokens joined by single dots."""
+    return all(is_ros_token(part) for part in name.split("."))
+
+
+# In the names of a mapped group's parameters, this segment stands for one key.
+ENTRY_KEY = "*"
+
+
+def entry_key_problem(keys: Sequence[str], maps: str) -> str | None:
+    """Why the items of a ``for_each`` parameter cannot name the entries of ``maps``, or None.
+
+    Each item becomes one segment of the entries' ROS names, so it must be a
+    name token, and distinct.
+    """
+    seen: set[str] = set()
+    for index, key in enumerate(keys):
+        if not is_ros_token(key):
+            return (
+                f"item {index} {key!r} cannot name an entry of {maps}: "
+                "use letters, digits and underscores, starting with a letter"
+            )
+        if key in seen:
+            return f"item {index} {key!r} repeats: each item names one entry of {maps}"
+        seen.add(key)
+    return None
 
 
 def attribute_name(ros_token: str) -> str:

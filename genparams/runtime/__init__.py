@@ -4,13 +4,14 @@ from genparams.runtime.changes import Change, Changes
 from genparams.runtime.errors import DetachedSnapshotError, ParameterDeclarationError
 from genparams.runtime.params import Params
 from genparams.runtime.spec import ParamSpec, SchemaSpec
-from genparams.runtime.tree import Group
+from genparams.runtime.tree import Group, GroupMap
 
 __all__ = [
     "Change",
     "Changes",
     "DetachedSnapshotError",
     "Group",
+    "GroupMap",
     "ParamSpec",
     "ParameterDeclarationError",
     "Params",

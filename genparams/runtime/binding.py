@@ -7,61 +7,32 @@ anywhere leaves the view untouched.
 
 from __future__ import annotations
 
+import functools
 import threading
 import traceback
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from typing import Any, Generic, TypeVar
 
-from rcl_interfaces.msg import (
-    FloatingPointRange,
-    IntegerRange,
-    ParameterDescriptor,
-    SetParametersResult,
-)
+from rcl_interfaces.msg import SetParametersResult
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
 from genparams.naming import is_ros_token, join_prefix
+from genparams.runtime.aliases import Aliases, old_names_by_current
 from genparams.runtime.changes import Change, Changes
+from genparams.runtime.declaring import declare_batch, descriptor_for, ros_parameter
+from genparams.runtime.deprecation import DeprecationWatch, Notices, report_overrides
+from genparams.runtime.entries import resolve_all
 from genparams.runtime.errors import ParameterDeclarationError
+from genparams.runtime.mapped import MappedEntries
+from genparams.runtime.overrides import OverrideReader
 from genparams.runtime.params import Params
-from genparams.runtime.resolve import resolve_values
 from genparams.runtime.spec import CompiledParam, compile_schema
 from genparams.runtime.tree import build_tree, copy_node, get_path, replace_values
 
 P = TypeVar("P", bound=Params)
 
 _ACCEPTED = SetParametersResult(successful=True)
-
-
-def descriptor_for(param: CompiledParam, full_name: str) -> ParameterDescriptor:
-    descriptor = ParameterDescriptor(
-        name=full_name,
-        type=param.type.ros_type,
-        description=param.descriptor_description,
-        additional_constraints=param.constraints_text,
-        read_only=param.spec.read_only,
-        dynamic_typing=False,
-    )
-    ros_range = param.ros_range
-    if ros_range is not None:
-        if ros_range.integer:
-            descriptor.integer_range = [
-                IntegerRange(
-                    from_value=int(ros_range.low),
-                    to_value=int(ros_range.high),
-                    step=int(ros_range.step),
-                )
-            ]
-        else:
-            descriptor.floating_point_range = [
-                FloatingPointRange(
-                    from_value=float(ros_range.low),
-                    to_value=float(ros_range.high),
-                    step=float(ros_range.step),
-                )
-            ]
-    return descriptor
 
 
 def check_prefix(prefix: str) -> str:
@@ -84,57 +55,47 @@ class Binding(Generic[P]):
         self.subscribers: list[Callable[[Changes[P]], None]] = []
         self.current: P  # the frozen root: snapshots hand this out
         self.live: P  # the root users hold: top-level attributes follow `current`
+        self.mapped: MappedEntries | None = None
 
     @classmethod
     def declare(cls, params_cls: type[P], node: Node, prefix: str = "") -> Binding[P]:
         prefix = check_prefix(prefix)
         spec = params_cls._SPEC
         compiled = compile_schema(spec)
-        full = {name: join_prefix(prefix, name) for name in compiled.parameters}
+        full = functools.partial(join_prefix, prefix)
 
-        # rclpy exposes overrides (-p, --params-file, launch) only through this attribute.
-        overrides: dict[str, Parameter] = getattr(node, "_parameter_overrides", {})
-        given: dict[str, Any] = {}
-        problems: list[str] = []
-        predeclared: list[str] = []
-        for name, full_name in full.items():
-            if node.has_parameter(full_name):
-                if full_name not in overrides:
-                    problems.append(f"{full_name}: already declared on this node by other code")
-                    continue
-                # Declared automatically from an override: re-declare it with its descriptor.
-                predeclared.append(full_name)
-                given[name] = node.get_parameter(full_name).value
-            elif full_name in overrides:
-                given[name] = overrides[full_name].value
-        values, resolve_problems = resolve_values(compiled, given, full.__getitem__)
-        problems.extend(resolve_problems)
+        reader = OverrideReader(node, full, old_names_by_current(compiled.aliases))
+        parameters, values, problems = resolve_all(compiled, reader.read, full)
+        problems[:0] = reader.problems
         if problems:
             raise ParameterDeclarationError(spec.name, node.get_fully_qualified_name(), problems)
 
-        for full_name in predeclared:
-            node.undeclare_parameter(full_name)
-        parameters = []
-        descriptors = {}
-        for name, value in values.items():
-            param, full_name = compiled.parameters[name], full[name]
-            parameters.append(
-                Parameter(full_name, Parameter.Type(param.type.ros_type), param.type.to_ros(value))
-            )
-            descriptors[full_name] = descriptor_for(param, full_name)
-        # Node.declare_parameters infers the type from the value, which turns an empty list
-        # into BYTE_ARRAY; this path keeps the declared type of every parameter.
-        node._declare_parameter_common(parameters, descriptors)
-
-        binding: Binding[P] = cls(
-            node, prefix, {full[name]: p for name, p in compiled.parameters.items()}
+        reader.release_predeclared()
+        notices = Notices(node)
+        aliases = Aliases(node, notices, compiled.aliases, full)
+        owned = {full(name): param for name, param in parameters.items()}
+        by_full_name = {full(name): value for name, value in values.items()}
+        declare_batch(
+            node,
+            [(ros_parameter(p, n, by_full_name[n]), descriptor_for(p, n)) for n, p in owned.items()]
+            + aliases.declarations(owned, by_full_name),
         )
-        binding.current = build_tree(params_cls, spec.groups, values, extra={"_binding": None})
+        report_overrides(notices, parameters, reader.given, reader.renamed, full)
+
+        binding: Binding[P] = cls(node, prefix, owned)
+        binding.current = build_tree(
+            params_cls, spec.groups, values, extra={"_binding": None}, maps=spec.maps
+        )
         live = copy_node(binding.current)
         object.__setattr__(live, "_binding", binding)
         binding.live = live
         node.add_on_set_parameters_callback(binding.on_set)
         node.add_post_set_parameters_callback(binding.on_post_set)
+        # Mapped groups, old names and deprecations each watch the node on their own.
+        binding.mapped = MappedEntries.attach(binding, compiled, parameters, notices)
+        if compiled.aliases:
+            aliases.attach()
+        DeprecationWatch.attach(node, notices, binding.owned, compiled)
         return binding
 
     def on_set(self, parameters: Sequence[Parameter]) -> SetParametersResult:
@@ -164,7 +125,9 @@ class Binding(Generic[P]):
             param = self.owned.get(parameter.name)
             if param is not None:
                 updates[param] = param.type.from_ros(parameter.value)
-        if updates:
+        if self.mapped is not None and self.mapped.changes_keys(updates):
+            self.mapped.reshape(updates)
+        elif updates:
             self.commit(updates)
 
     def commit(self, updates: dict[CompiledParam, Any]) -> None:
@@ -180,10 +143,15 @@ class Binding(Generic[P]):
             if not changed:
                 return
             after = replace_values(before, paths, extra=("_binding",))
+            self.publish(before, after, changed, {path[0] for path in paths})
+
+    def publish(self, before: P, after: P, changed: list[Change], heads: Iterable[str]) -> None:
+        """Make ``after`` current (``heads``: the top-level attributes it replaced), notify."""
+        with self.lock:
             self.current = after
-            for head in {path[0] for path in paths}:
+            for head in heads:
                 object.__setattr__(self.live, head, getattr(after, head))
-            self.notify(Changes(before, after, tuple(changed)))
+        self.notify(Changes(before, after, tuple(changed)))
 
     def notify(self, changes: Changes[P]) -> None:
         for callback in tuple(self.subscribers):

@@ -6,8 +6,8 @@ from collections.abc import Callable, Mapping
 from typing import TYPE_CHECKING, Any, ClassVar, Self
 
 from genparams.runtime.changes import Changes
+from genparams.runtime.entries import resolve_all
 from genparams.runtime.errors import DetachedSnapshotError, ParameterDeclarationError
-from genparams.runtime.resolve import resolve_values
 from genparams.runtime.spec import SchemaSpec, compile_schema
 from genparams.runtime.tree import Group, build_tree, to_dict
 
@@ -39,12 +39,17 @@ class Params(Group):
     def defaults(cls, overrides: Mapping[str, Any] | None = None) -> Self:
         """A snapshot of the defaults (plus ``overrides`` by ROS name), without ROS."""
         compiled = compile_schema(cls._SPEC)
-        values, problems = resolve_values(compiled, overrides or {})
-        unknown = sorted(set(overrides or {}) - set(compiled.parameters))
+        # An old name (alias) stands for the current one, as it does in a params file.
+        given = {compiled.aliases.get(n, n): value for n, value in (overrides or {}).items()}
+        parameters, values, problems = resolve_all(
+            compiled, lambda names: {n: given[n] for n in names if n in given}
+        )
+        unknown = sorted(set(given) - set(parameters))
         problems.extend(f"{name}: no such parameter" for name in unknown)
         if problems:
             raise ParameterDeclarationError(cls._SPEC.name, "defaults()", problems)
-        return build_tree(cls, cls._SPEC.groups, values, extra={"_binding": None})
+        spec = cls._SPEC
+        return build_tree(cls, spec.groups, values, extra={"_binding": None}, maps=spec.maps)
 
     def snapshot(self) -> Self:
         """A frozen, consistent view of every value, O(1) whatever the number of parameters."""

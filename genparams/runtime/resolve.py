@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from typing import Any
 
-from genparams.runtime.spec import CompiledSchema
+from genparams.runtime.spec import CompiledParam, CompiledSchema
 from genparams.types import ValueTypeError
 
 
@@ -14,15 +14,19 @@ def resolve_values(
     given: Mapping[str, Any],
     full_name: Callable[[str], str] = lambda name: name,
     source: str = "override",
+    parameters: Mapping[str, CompiledParam] | None = None,
 ) -> tuple[dict[str, Any], list[str]]:
     """Typed values for every parameter, and every problem found (all of them, not the first).
 
     ``given`` maps relative names to values in ROS form (as rclpy holds them);
-    they are typed as strictly as ROS types them.
+    they are typed as strictly as ROS types them. ``parameters`` defaults to
+    the fixed parameters of ``compiled``.
     """
     values: dict[str, Any] = {}
     problems: list[str] = []
-    for name, param in compiled.parameters.items():
+    if parameters is None:
+        parameters = compiled.parameters
+    for name, param in parameters.items():
         shown = full_name(name)
         if name in given:
             try:

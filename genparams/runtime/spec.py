@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from genparams.naming import attribute_name
+from genparams.naming import ENTRY_KEY, attribute_name, entry_key_problem
 from genparams.types import TYPES, ParamType
 from genparams.validators import OneOf, RosRange, SubsetOf, Validator, build_validator
 
@@ -28,13 +28,39 @@ class ParamSpec:
     validators: tuple[tuple[str, Any], ...] = ()
     additional_constraints: str = ""
     deprecated: str = ""
+    aliases: tuple[str, ...] = ()  # old dotted names, relative to the prefix
 
 
 @dataclass(frozen=True)
 class SchemaSpec:
+    """A generated class's parameters.
+
+    Parameters of mapped groups are templates: ``gains.*.p`` stands for
+    ``gains.<key>.p`` for every item of the map's ``for_each`` parameter.
+    """
+
     name: str
     parameters: tuple[ParamSpec, ...]
-    groups: Mapping[str, type[Group]]  # dotted namespace -> generated class
+    groups: Mapping[str, type[Group]]  # dotted namespace -> generated class ("gains.*": entry)
+    maps: Mapping[str, str] = field(default_factory=dict)  # "gains" -> its for_each parameter
+
+
+@dataclass(frozen=True)
+class EntryKeys:
+    """The items of a ``for_each`` parameter name mapped entries: distinct name tokens."""
+
+    maps: str  # the mapped groups it keys, for messages
+    rule: str = "for_each"
+
+    def __call__(self, value: Any) -> str | None:
+        reason = entry_key_problem(value, self.maps)
+        return None if reason is None else f"{reason} ({self.rule})"
+
+    def describe(self) -> str:
+        return (
+            f"each item names an entry of {self.maps}: letters, digits and underscores, "
+            "starting with a letter; no repeats"
+        )
 
 
 @dataclass(frozen=True)
@@ -78,7 +104,7 @@ class CompiledParam:
         return text
 
 
-def compile_param(spec: ParamSpec) -> CompiledParam:
+def compile_param(spec: ParamSpec, extra_checks: tuple[Validator, ...] = ()) -> CompiledParam:
     param_type = TYPES[spec.type]
     checks: list[Validator] = []
     if spec.range is not None:
@@ -95,6 +121,7 @@ def compile_param(spec: ParamSpec) -> CompiledParam:
     if spec.choices is not None:
         checks.append(SubsetOf(spec.choices) if param_type.is_array else OneOf(spec.choices))
     checks.extend(build_validator(rule, argument, spec.type) for rule, argument in spec.validators)
+    checks.extend(extra_checks)
     return CompiledParam(
         spec=spec,
         type=param_type,
@@ -106,7 +133,13 @@ def compile_param(spec: ParamSpec) -> CompiledParam:
 @dataclass(frozen=True)
 class CompiledSchema:
     spec: SchemaSpec
-    parameters: Mapping[str, CompiledParam]  # by relative ROS name
+    parameters: Mapping[str, CompiledParam]  # fixed parameters, by relative ROS name
+    templates: Mapping[str, CompiledParam] = field(default_factory=dict)  # "gains.*.p"
+    aliases: Mapping[str, str] = field(default_factory=dict)  # old name -> current name
+
+    @property
+    def maps(self) -> Mapping[str, str]:
+        return self.spec.maps
 
 
 _COMPILED: dict[int, CompiledSchema] = {}
@@ -116,6 +149,23 @@ def compile_schema(spec: SchemaSpec) -> CompiledSchema:
     """Compile once per generated class; later calls are a dict lookup."""
     compiled = _COMPILED.get(id(spec))
     if compiled is None or compiled.spec is not spec:
-        compiled = CompiledSchema(spec, {p.name: compile_param(p) for p in spec.parameters})
+        compiled = _compile(spec)
         _COMPILED[id(spec)] = compiled
     return compiled
+
+
+def _compile(spec: SchemaSpec) -> CompiledSchema:
+    keyed: dict[str, list[str]] = {}
+    for map_path, key_name in spec.maps.items():
+        keyed.setdefault(key_name, []).append(map_path)
+    parameters: dict[str, CompiledParam] = {}
+    templates: dict[str, CompiledParam] = {}
+    aliases: dict[str, str] = {}
+    for param_spec in spec.parameters:
+        maps = keyed.get(param_spec.name)
+        extra = (EntryKeys(", ".join(maps)),) if maps else ()
+        compiled = compile_param(param_spec, extra)
+        is_template = ENTRY_KEY in param_spec.name.split(".")
+        (templates if is_template else parameters)[param_spec.name] = compiled
+        aliases.update(dict.fromkeys(param_spec.aliases, param_spec.name))
+    return CompiledSchema(spec, parameters, templates, aliases)

@@ -7,10 +7,10 @@ shared mutable state) and one set costs O(depth x group width), not O(N).
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping
+from collections.abc import Collection, Iterable, Iterator, Mapping
 from typing import Any, TypeVar
 
-from genparams.naming import attribute_name
+from genparams.naming import ENTRY_KEY, attribute_name
 
 _READ_ONLY = (
     "{cls}.{name} is read-only: change parameters through the node "
@@ -43,6 +43,36 @@ class Group:
 
 G = TypeVar("G", bound=Group)
 
+
+class GroupMap(Mapping[str, G]):
+    """The entries of a mapped group (``for_each``), by key: a read-only value like a group.
+
+    Keys live in a mapping, not in attributes, so no key can hide a field or
+    a method, and keys need not be Python identifiers.
+    """
+
+    __slots__ = ("_entries",)
+    _entries: dict[str, G]
+
+    def __init__(self, entries: Mapping[str, G] | None = None) -> None:
+        object.__setattr__(self, "_entries", dict(entries or {}))
+
+    def __getitem__(self, key: str) -> G:
+        return self._entries[key]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._entries)
+
+    def __len__(self) -> int:
+        return len(self._entries)
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        raise AttributeError(_READ_ONLY.format(cls="GroupMap", name=name))
+
+    def __repr__(self) -> str:
+        return f"GroupMap({self._entries!r})"
+
+
 _FIELDS: dict[type[Group], tuple[str, ...]] = {}
 
 
@@ -60,8 +90,13 @@ def build_tree(
     groups: Mapping[str, type[Group]],
     values: Mapping[str, Any],
     extra: Mapping[str, Any] | None = None,
+    maps: Collection[str] = (),
 ) -> G:
-    """A new tree from dotted ROS names -> typed values. ``extra`` fills non-field slots."""
+    """A new tree from dotted ROS names -> typed values. ``extra`` fills non-field slots.
+
+    ``groups`` and ``maps`` are keyed by template paths: a mapped group
+    ``gains`` (in ``maps``) holds one ``groups["gains.*"]`` per key.
+    """
     nested: dict[str, Any] = {}
     for name, value in values.items():
         parts = name.split(".")
@@ -70,12 +105,24 @@ def build_tree(
             level = level.setdefault(part, {})
         level[parts[-1]] = value
 
-    def make(cls: type[Group], path: str, level: dict[str, Any]) -> Group:
+    # Every group and map exists even when no value lies below it (a map without keys).
+    children: dict[str, list[str]] = {}
+    for path in (*groups, *maps):
+        parent, _, name = path.rpartition(".")
+        if name != ENTRY_KEY:
+            children.setdefault(parent, []).append(name)
+
+    def make(cls: type[Group], template: str, level: dict[str, Any]) -> Group:
+        for name in children.get(template, ()):
+            level.setdefault(name, {})
         node = object.__new__(cls)
         for key, value in level.items():
-            child_path = f"{path}.{key}" if path else key
-            if child_path in groups:
-                value = make(groups[child_path], child_path, value)
+            child = f"{template}.{key}" if template else key
+            if child in maps:
+                entry = f"{child}.{ENTRY_KEY}"
+                value = GroupMap({k: make(groups[entry], entry, v) for k, v in value.items()})
+            elif child in groups:
+                value = make(groups[child], child, value)
             object.__setattr__(node, attribute_name(key), value)
         return node
 
@@ -86,6 +133,8 @@ def build_tree(
 
 
 def copy_node(node: G, extra: Iterable[str] = ()) -> G:
+    if isinstance(node, GroupMap):
+        return GroupMap(node._entries)
     new = object.__new__(type(node))
     for name in (*field_names(type(node)), *extra):
         object.__setattr__(new, name, getattr(node, name))
@@ -105,14 +154,23 @@ def replace_values(root: G, updates: Mapping[tuple[str, ...], Any], extra: Itera
     for name, value in leaves.items():
         object.__setattr__(new, name, value)
     for name, sub_updates in by_head.items():
-        object.__setattr__(new, name, replace_values(getattr(root, name), sub_updates))
+        child = replace_values(_child(root, name), sub_updates)
+        if isinstance(new, GroupMap):
+            new._entries[name] = child  # the copy is not shared yet
+        else:
+            object.__setattr__(new, name, child)
     return new
 
 
+def _child(node: Any, name: str) -> Any:
+    return node[name] if isinstance(node, GroupMap) else getattr(node, name)
+
+
 def get_path(root: Group, path: tuple[str, ...]) -> Any:
+    """The value at an attribute path; through a mapped group, the path holds the key."""
     node: Any = root
     for name in path:
-        node = getattr(node, name)
+        node = _child(node, name)
     return node
 
 
@@ -122,5 +180,8 @@ def to_dict(node: Group) -> dict[str, Any]:
     for attr in field_names(type(node)):
         value = getattr(node, attr)
         key = attr[:-1] if attr.endswith("_") and attribute_name(attr[:-1]) == attr else attr
-        out[key] = to_dict(value) if isinstance(value, Group) else value
+        if isinstance(value, GroupMap):
+            out[key] = {k: to_dict(entry) for k, entry in value.items()}
+        else:
+            out[key] = to_dict(value) if isinstance(value, Group) else value
     return out

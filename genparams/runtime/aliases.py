@@ -1,0 +1,108 @@
+"""Old parameter names (``aliases:``) kept working after a rename.
+
+An old name is declared next to the current one, with the same type and
+descriptor. A pre-set callback mirrors every set of either name onto the
+other, so both are validated, stored and announced in one atomic change and
+always read the same; a set under the old name warns once.
+"""
+
+from __future__ import annotations
+
+import array
+from collections.abc import Callable, Mapping, Sequence
+from typing import Any
+
+from rcl_interfaces.msg import SetParametersResult
+from rclpy.node import Node
+from rclpy.parameter import Parameter
+
+from genparams.runtime.declaring import Declaration, descriptor_for, ros_parameter
+from genparams.runtime.deprecation import Notices
+from genparams.runtime.spec import CompiledParam
+
+_ACCEPTED = SetParametersResult(successful=True)
+
+
+def old_names_by_current(aliases: Mapping[str, str]) -> dict[str, tuple[str, ...]]:
+    """Relative current name -> its old names, from old name -> current name."""
+    out: dict[str, tuple[str, ...]] = {}
+    for old, current in aliases.items():
+        out[current] = (*out.get(current, ()), old)
+    return out
+
+
+class Aliases:
+    def __init__(
+        self,
+        node: Node,
+        notices: Notices,
+        aliases: Mapping[str, str],
+        full_name: Callable[[str], str],
+    ) -> None:
+        self.node = node
+        self.notices = notices
+        self.current_of = {full_name(old): full_name(cur) for old, cur in aliases.items()}
+        self.old_of = {
+            full_name(cur): tuple(full_name(o) for o in olds)
+            for cur, olds in old_names_by_current(aliases).items()
+        }
+
+    def declarations(
+        self, parameters: Mapping[str, CompiledParam], values: Mapping[str, Any]
+    ) -> list[Declaration]:
+        """The old names, declared like the current names (by full name) with equal values."""
+        out = []
+        for old, current in self.current_of.items():
+            param = parameters[current]
+            descriptor = descriptor_for(param, old)
+            descriptor.description = f"Deprecated: old name of {current}; use that. " + (
+                descriptor.description
+            )
+            out.append((ros_parameter(param, old, values[current]), descriptor))
+        return out
+
+    def attach(self) -> None:
+        self.node.add_pre_set_parameters_callback(self.pre_set)
+        self.node.add_on_set_parameters_callback(self.on_set)
+
+    def pre_set(self, parameters: Sequence[Parameter]) -> list[Parameter]:
+        """The request plus the other name of every renamed parameter it sets."""
+        requested = {parameter.name for parameter in parameters}
+        mirrored = []
+        for parameter in parameters:
+            current = self.current_of.get(parameter.name)
+            if current is not None:
+                self.notices.renamed(parameter.name, current)
+                others: tuple[str, ...] = (current, *self.old_of[current])
+            else:
+                others = self.old_of.get(parameter.name, ())
+            for other in others:
+                if other not in requested and other != parameter.name:
+                    requested.add(other)
+                    mirrored.append(Parameter(other, parameter.type_, parameter.value))
+        return [*parameters, *mirrored]
+
+    def on_set(self, parameters: Sequence[Parameter]) -> SetParametersResult:
+        """Both names of one parameter must change together, to one value."""
+        values = {parameter.name: parameter.value for parameter in parameters}
+        reasons = []
+        for old, current in self.current_of.items():
+            if old not in values and current not in values:
+                continue
+            if old not in values or current not in values:
+                given, missing = (old, current) if old in values else (current, old)
+                reasons.append(f"{given}: must be set together with {missing}, its other name")
+            elif not _same(values[old], values[current]):
+                reasons.append(
+                    f"{old}: is the old name of {current}, but was given a different value"
+                )
+        if reasons:
+            return SetParametersResult(successful=False, reason="; ".join(reasons))
+        return _ACCEPTED
+
+
+def _same(a: Any, b: Any) -> bool:
+    sequences = (list, tuple, array.array)
+    if isinstance(a, sequences) and isinstance(b, sequences):
+        return list(a) == list(b)  # a request may carry a list and an array.array
+    return bool(a == b)

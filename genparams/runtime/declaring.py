@@ -1,0 +1,82 @@
+"""Parameters as rclpy sees them: descriptors, values in ROS form, batched declaration."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+from rcl_interfaces.msg import (
+    FloatingPointRange,
+    IntegerRange,
+    ParameterDescriptor,
+    SetParametersResult,
+)
+from rclpy.node import Node
+from rclpy.parameter import Parameter
+
+from genparams.runtime.spec import CompiledParam
+
+
+def descriptor_for(param: CompiledParam, full_name: str) -> ParameterDescriptor:
+    descriptor = ParameterDescriptor(
+        name=full_name,
+        type=param.type.ros_type,
+        description=param.descriptor_description,
+        additional_constraints=param.constraints_text,
+        read_only=param.spec.read_only,
+        dynamic_typing=False,
+    )
+    ros_range = param.ros_range
+    if ros_range is not None:
+        if ros_range.integer:
+            descriptor.integer_range = [
+                IntegerRange(
+                    from_value=int(ros_range.low),
+                    to_value=int(ros_range.high),
+                    step=int(ros_range.step),
+                )
+            ]
+        else:
+            descriptor.floating_point_range = [
+                FloatingPointRange(
+                    from_value=float(ros_range.low),
+                    to_value=float(ros_range.high),
+                    step=float(ros_range.step),
+                )
+            ]
+    return descriptor
+
+
+def ros_parameter(param: CompiledParam, full_name: str, value: Any) -> Parameter:
+    """A typed-view value as an rclpy Parameter of the declared type (never inferred)."""
+    return Parameter(full_name, Parameter.Type(param.type.ros_type), param.type.to_ros(value))
+
+
+Declaration = tuple[Parameter, ParameterDescriptor]
+
+
+def declare_batch(node: Node, declarations: Sequence[Declaration]) -> None:
+    """Declare parameters with their descriptors, one on-set and post-set round each.
+
+    Node.declare_parameters infers the type from the value, which turns an
+    empty list into BYTE_ARRAY; this path keeps the declared type.
+    """
+    parameters = [parameter for parameter, _ in declarations]
+    node._declare_parameter_common(parameters, {p.name: d for p, d in declarations})
+
+
+def replace_batch(
+    node: Node, declarations: Sequence[Declaration], removed: Sequence[str]
+) -> SetParametersResult:
+    """Declare and undeclare parameters in one atomic change with one parameter event.
+
+    rclpy's undeclare_parameter neither publishes the deletion nor undeclares a
+    read-only parameter; a NOT_SET value under a dynamically typed descriptor
+    does both, and new parameters in the same batch are announced together.
+    """
+    parameters = [parameter for parameter, _ in declarations]
+    descriptors = {p.name: d for p, d in declarations}
+    for name in removed:
+        parameters.append(Parameter(name))
+        descriptors[name] = ParameterDescriptor(name=name, dynamic_typing=True)
+    return node._set_parameters_atomically_common(parameters, descriptors)

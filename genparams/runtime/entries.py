@@ -1,0 +1,63 @@
+"""Entries of mapped groups: templates (``gains.*.p``) expanded over key lists. Pure Python."""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from dataclasses import replace
+from typing import Any
+
+from genparams.naming import ENTRY_KEY
+from genparams.runtime.resolve import resolve_values
+from genparams.runtime.spec import CompiledParam, CompiledSchema
+
+
+def map_chain(template_name: str) -> tuple[str, ...]:
+    """The maps a template lies in, outermost first: ``a.*.b.*.x`` -> ``a``, ``a.*.b``."""
+    parts = template_name.split(".")
+    return tuple(".".join(parts[:i]) for i, part in enumerate(parts) if part == ENTRY_KEY)
+
+
+def instantiate(template: CompiledParam, keys: Sequence[str]) -> CompiledParam:
+    """The parameter of one entry: each ``*`` of the template replaced by the next key."""
+    chosen = iter(keys)
+    name = ".".join(next(chosen) if p == ENTRY_KEY else p for p in template.name.split("."))
+    chosen = iter(keys)
+    path = tuple(next(chosen) if p == ENTRY_KEY else p for p in template.attribute_path)
+    return replace(template, spec=replace(template.spec, name=name), attribute_path=path)
+
+
+def expand(compiled: CompiledSchema, values: Mapping[str, Any]) -> dict[str, CompiledParam]:
+    """Every entry's parameter for the key lists in ``values`` (maps whose key is absent: none)."""
+    entries: dict[str, CompiledParam] = {}
+    for template in compiled.templates.values():
+        key_lists = [values.get(compiled.maps[m]) for m in map_chain(template.name)]
+        if any(keys is None for keys in key_lists):
+            continue
+        for keys in itertools.product(*key_lists):  # type: ignore[arg-type]
+            entry = instantiate(template, keys)
+            entries[entry.name] = entry
+    return entries
+
+
+def resolve_all(
+    compiled: CompiledSchema,
+    read: Callable[[Iterable[str]], Mapping[str, Any]],
+    full_name: Callable[[str], str] = lambda name: name,
+) -> tuple[dict[str, CompiledParam], dict[str, Any], list[str]]:
+    """Parameters (fixed ones, then entries) with their starting values, and every problem.
+
+    Key parameters are fixed, so their values are known before the entries
+    they key are expanded. ``read`` gives the ROS-form values given for names.
+    """
+    parameters = dict(compiled.parameters)
+    values, problems = resolve_values(compiled, read(parameters), full_name)
+    if compiled.templates:
+        entries = expand(compiled, values)
+        entry_values, entry_problems = resolve_values(
+            compiled, read(entries), full_name, parameters=entries
+        )
+        parameters.update(entries)
+        values.update(entry_values)
+        problems.extend(entry_problems)
+    return parameters, values, problems

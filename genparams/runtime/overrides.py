@@ -1,0 +1,78 @@
+"""Values a node was started with (-p, --params-file, launch files), read by relative name."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Mapping
+from typing import Any
+
+from rclpy.node import Node
+from rclpy.parameter import Parameter
+
+_MISSING = object()
+
+
+class OverrideReader:
+    """Reads overrides for parameters about to be declared, and collects what it finds.
+
+    An override under an old name (an alias) applies to the current name.
+    Parameters the node already declared from overrides
+    (``automatically_declare_parameters_from_overrides``) count as overrides and
+    are listed in ``predeclared``, to be re-declared with their descriptors.
+    """
+
+    def __init__(
+        self,
+        node: Node,
+        full_name: Callable[[str], str],
+        old_names: Mapping[str, tuple[str, ...]] | None = None,
+    ) -> None:
+        self.node = node
+        self.full_name = full_name
+        self.old_names = old_names or {}
+        # rclpy exposes overrides only through this attribute.
+        self.overrides: dict[str, Parameter] = getattr(node, "_parameter_overrides", {})
+        self.problems: list[str] = []
+        self.predeclared: list[str] = []  # full names
+        self.renamed: list[tuple[str, str]] = []  # (old full name, full name) an override used
+        self.given: list[str] = []  # relative names an override was found for
+
+    def read(self, names: Iterable[str]) -> dict[str, Any]:
+        """ROS-form values given for relative ``names`` (absent when none was given)."""
+        given: dict[str, Any] = {}
+        for name in names:
+            full_name = self.full_name(name)
+            value = self._value(full_name)
+            for old in self.old_names.get(name, ()):
+                old_full = self.full_name(old)
+                old_value = self._value(old_full)
+                if old_value is _MISSING:
+                    continue
+                if value is _MISSING:
+                    value = old_value
+                    self.renamed.append((old_full, full_name))
+                elif old_value != value:
+                    self.problems.append(
+                        f"{full_name}: given as {value!r} and under its old name {old_full} "
+                        f"as {old_value!r}; keep only {full_name}"
+                    )
+            if value is not _MISSING:
+                given[name] = value
+        self.given.extend(given)
+        return given
+
+    def _value(self, full_name: str) -> Any:
+        if self.node.has_parameter(full_name):
+            if full_name not in self.overrides:
+                self.problems.append(f"{full_name}: already declared on this node by other code")
+                return _MISSING
+            self.predeclared.append(full_name)
+            return self.node.get_parameter(full_name).value
+        if full_name in self.overrides:
+            return self.overrides[full_name].value
+        return _MISSING
+
+    def release_predeclared(self) -> None:
+        """Undeclare what rclpy declared from overrides, so it is declared again, fully."""
+        for full_name in self.predeclared:
+            if self.node.has_parameter(full_name):
+                self.node.undeclare_parameter(full_name)
