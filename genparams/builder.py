@@ -15,6 +15,7 @@ from genparams import naming
 from genparams.errors import SchemaError, SchemaProblem
 from genparams.loader import LoadedDocument, Path, dotted
 from genparams.model import Group, Parameter, RangeSpec, Schema, ValidatorSpec
+from genparams.references import check_aliases, check_maps
 from genparams.schema_check import did_you_mean
 from genparams.types import INT64_MAX, INT64_MIN, TYPES, ParamType, ValueTypeError
 from genparams.validators import (
@@ -26,6 +27,8 @@ from genparams.validators import (
     ValidatorArgumentError,
     build_validator,
 )
+
+FOR_EACH = "for_each"
 
 
 def build_schema(document: LoadedDocument) -> Schema:
@@ -50,6 +53,9 @@ class _ModelBuilder:
         self.document = document
         self.problems: list[SchemaProblem] = []
         self.class_names: set[str] = set()
+        self.leaf_paths: dict[str, Path] = {}  # parameter ROS name -> its document path
+        self.mapped: list[tuple[Group, Path]] = []
+        self.aliases: list[tuple[str, Path, Parameter]] = []  # (alias, where, its parameter)
 
     def problem(self, path: Path, message: str, *, at_key: bool = False) -> None:
         where = self.document.key_location(path) if at_key else self.document.value_location(path)
@@ -61,6 +67,8 @@ class _ModelBuilder:
         class_name = naming.class_name(name)
         self.class_names.add(class_name)
         root = self.group(data["parameters"], ("parameters",), (), "", class_name)
+        check_maps(root, self.mapped, self.leaf_paths, self.problem)
+        check_aliases(root, self.aliases, self.problem)
         return Schema(
             name=name,
             description=data.get("description", ""),
@@ -81,11 +89,23 @@ class _ModelBuilder:
         parameters: list[Parameter] = []
         groups: list[Group] = []
         attributes: dict[str, str] = {}
+        mapped_over = mapping.get(FOR_EACH, "")
+        if mapped_over and not path:
+            self.problem(
+                (*doc_path, FOR_EACH),
+                "the top level cannot be mapped: put for_each in a namespace",
+                at_key=True,
+            )
+            mapped_over = ""
+        # Below a mapped group, names hold the entry key's place.
+        member_path = (*path, naming.ENTRY_KEY) if mapped_over else path
         for key, value in mapping.items():
+            if key == FOR_EACH:
+                continue
             key_path = (*doc_path, key)
             if not self.check_name(key, key_path, attributes, top_level=not path):
                 continue
-            child_path = (*path, key)
+            child_path = (*member_path, key)
             child_attribute = naming.attribute_name(key)
             if isinstance(value, dict) and "type" in value:
                 parameters.append(self.parameter(value, key_path, child_path, child_attribute))
@@ -95,17 +115,22 @@ class _ModelBuilder:
         if not parameters and not groups:
             what = "namespace" if path else "schema"
             self.problem(doc_path, f"empty {what}: give it parameters", at_key=True)
-        return Group(
+        group = Group(
             ros_name=".".join(path),
             path=path,
             attribute=attribute,
             class_name=class_name,
             parameters=tuple(parameters),
             groups=tuple(groups),
+            mapped_over=mapped_over,
         )
+        if mapped_over:
+            self.mapped.append((group, doc_path))
+        return group
 
     def group_class_name(self, path: tuple[str, ...]) -> str:
-        base = "".join(naming.pascal_case(part) for part in path) + "Group"
+        words = (naming.pascal_case(part) for part in path if part != naming.ENTRY_KEY)
+        base = "".join(words) + "Group"
         candidate, number = base, 2
         while candidate in self.class_names:
             candidate, number = f"{base}{number}", number + 1
@@ -177,7 +202,7 @@ class _ModelBuilder:
                 if reason is not None:
                     self.problem((*doc_path, "default"), f"default violates {key}: {reason}")
         self.check_satisfiable(doc_path, param_type, checks)
-        return Parameter(
+        parameter = Parameter(
             ros_name=".".join(path),
             path=path,
             attribute=attribute,
@@ -192,8 +217,13 @@ class _ModelBuilder:
             validators=validators,
             additional_constraints=leaf.get("additional_constraints", ""),
             deprecated=leaf.get("deprecated", ""),
+            aliases=tuple(leaf.get("aliases", ())),
             location=self.document.key_location(doc_path),
         )
+        self.leaf_paths[parameter.ros_name] = doc_path
+        for index, alias in enumerate(parameter.aliases):
+            self.aliases.append((alias, (*doc_path, "aliases", index), parameter))
+        return parameter
 
     @staticmethod
     def range_validator(value_range: RangeSpec, param_type: ParamType) -> RosRange:

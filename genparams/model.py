@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from genparams.errors import Location
+from genparams.naming import ENTRY_KEY
 from genparams.types import ParamType
 from genparams.validators import RosRange
 
@@ -51,6 +52,7 @@ class Parameter:
     validators: tuple[ValidatorSpec, ...]
     additional_constraints: str
     deprecated: str
+    aliases: tuple[str, ...]  # old dotted names, relative to the prefix
     location: Location
 
     @property
@@ -70,7 +72,9 @@ class Parameter:
         if self.all_constraints_text:
             facts.append(f"Constraints: {self.all_constraints_text}.")
         if self.deprecated:
-            facts.append(f"Deprecated: {self.deprecated}")
+            facts.append(f"Deprecated: {self.deprecated.rstrip('.')}.")
+        if self.aliases:
+            facts.append("Old names: " + ", ".join(self.aliases) + ".")
         lines.append(" ".join(facts))
         return "\n\n".join(lines)
 
@@ -128,6 +132,7 @@ class Parameter:
             ("validators", tuple(v.as_tuple() for v in self.validators), ()),
             ("additional_constraints", self.additional_constraints, ""),
             ("deprecated", self.deprecated, ""),
+            ("aliases", self.aliases, ()),
         ):
             if value != empty:
                 options.append((key, value))
@@ -145,23 +150,46 @@ class Field:
 
 @dataclass(frozen=True)
 class Group:
+    """A namespace; with ``mapped_over``, a mapped group: one entry per item of that parameter.
+
+    Inside a mapped group, names hold ``*`` where an entry's key goes:
+    the parameter ``p`` of the mapped group ``gains`` is ``gains.*.p``.
+    """
+
     ros_name: str  # dotted namespace, "" for the top level
     path: tuple[str, ...]
     attribute: str  # attribute in the parent group ("" for the top level)
-    class_name: str
+    class_name: str  # for a mapped group, the class of one entry
     parameters: tuple[Parameter, ...]
     groups: tuple[Group, ...]
+    mapped_over: str = ""  # ROS name of the string_array parameter whose items key the entries
+
+    @property
+    def spec_path(self) -> str:
+        """The runtime's key for this group's class: one entry's path for a mapped group."""
+        return f"{self.ros_name}.{ENTRY_KEY}" if self.mapped_over else self.ros_name
+
+    @property
+    def annotation(self) -> str:
+        """The type of this group as an attribute of its parent."""
+        return f"_Mapping[str, {self.class_name}]" if self.mapped_over else self.class_name
+
+    @property
+    def field_docstring(self) -> str:
+        if self.mapped_over:
+            return f"Mapped group {self.ros_name}: one entry per item of {self.mapped_over}."
+        return f"Namespace {self.ros_name}."
 
     @property
     def fields(self) -> tuple[Field, ...]:
         fields = [Field(p.attribute, p.annotation, p.docstring) for p in self.parameters]
-        fields.extend(
-            Field(g.attribute, g.class_name, f"Namespace {g.ros_name}.") for g in self.groups
-        )
+        fields.extend(Field(g.attribute, g.annotation, g.field_docstring) for g in self.groups)
         return tuple(sorted(fields, key=lambda f: f.attribute))
 
     @property
     def docstring(self) -> str:
+        if self.mapped_over:
+            return f"One entry of {self.ros_name}, for each item of {self.mapped_over}."
         return f"Parameters under {self.ros_name}." if self.ros_name else ""
 
     @property
@@ -200,6 +228,15 @@ class Schema:
     @property
     def docstring(self) -> str:
         return self.description or f"Parameters of {self.name}."
+
+    @property
+    def maps(self) -> tuple[tuple[str, str], ...]:
+        """(mapped group, its for_each parameter), for the runtime."""
+        return tuple((g.ros_name, g.mapped_over) for g in self.nested_groups if g.mapped_over)
+
+    @property
+    def uses_mapping(self) -> bool:
+        return bool(self.maps)
 
     @property
     def class_names(self) -> tuple[str, ...]:

@@ -1,0 +1,108 @@
+"""Checks of schema names that point at other names: ``for_each`` targets and ``aliases``.
+
+They run once the whole tree is built, since a reference may point anywhere in it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Protocol
+
+from genparams import naming
+from genparams.loader import Path
+from genparams.model import Group, Parameter
+from genparams.schema_check import did_you_mean
+
+
+class Report(Protocol):
+    def __call__(self, path: Path, message: str, *, at_key: bool = False) -> None: ...
+
+
+def _inside(parts: tuple[str, ...], template: tuple[str, ...]) -> bool:
+    """``parts`` equals or lies under ``template``; ``*`` in a template matches any token."""
+    if len(parts) < len(template):
+        return False
+    return all(t in (p, naming.ENTRY_KEY) for p, t in zip(parts, template, strict=False))
+
+
+def _overlap(a: tuple[str, ...], b: tuple[str, ...]) -> bool:
+    """One name equals the other or lies under it; ``*`` (an entry key) matches any token."""
+    return all(x == y or naming.ENTRY_KEY in (x, y) for x, y in zip(a, b, strict=False))
+
+
+def check_maps(
+    root: Group,
+    mapped: Sequence[tuple[Group, Path]],
+    leaf_paths: dict[str, Path],
+    report: Report,
+) -> None:
+    """Each ``for_each`` names a fixed string_array parameter whose default keys entries."""
+    fixed = {p.ros_name: p for p in root.walk_parameters() if naming.ENTRY_KEY not in p.path}
+    map_paths = [(group.path, group.ros_name) for group, _ in mapped]
+    for group, doc_path in mapped:
+        where = (*doc_path, "for_each")
+        target = group.mapped_over
+        param = fixed.get(target)
+        if param is None:
+            report(where, _missing_target(target, fixed, map_paths))
+        elif param.type.name != "string_array":
+            report(
+                where,
+                f"for_each names {target!r}, a {param.type.name} parameter; "
+                "it must name a string_array parameter",
+            )
+        elif not param.required:
+            reason = naming.entry_key_problem(param.default, group.ros_name)
+            if reason is not None:
+                report((*leaf_paths[target], "default"), f"default violates for_each: {reason}")
+
+
+def _missing_target(
+    target: str, fixed: dict[str, Parameter], map_paths: list[tuple[tuple[str, ...], str]]
+) -> str:
+    if not naming.is_ros_name(target):
+        return f"for_each must be a dotted parameter name, got {target!r}"
+    parts = tuple(target.split("."))
+    for path, name in map_paths:
+        if _inside(parts, path) and len(parts) > len(path):
+            return (
+                f"for_each names {target!r}, inside mapped group {name!r}, where every "
+                "entry has its own copy; it must name a parameter outside every mapped group"
+            )
+    if any(name.startswith(target + ".") for name in fixed):
+        return f"for_each names {target!r}, a namespace; it must name a string_array parameter"
+    return f"for_each names {target!r}, which is not a parameter{did_you_mean(target, fixed)}"
+
+
+def check_aliases(
+    root: Group, aliases: Sequence[tuple[str, Path, Parameter]], report: Report
+) -> None:
+    """Old names are ROS names that collide with no parameter, namespace or other old name."""
+    taken = [(p.path, f"parameter {p.ros_name!r}") for p in root.walk_parameters()]
+    for alias, where, param in aliases:
+        if naming.ENTRY_KEY in param.path:
+            report(where, f"aliases are not supported inside a mapped group ({param.ros_name!r})")
+            continue
+        if not naming.is_ros_name(alias):
+            report(
+                where,
+                f"invalid alias {alias!r}: dot-separated names of letters, digits and "
+                "underscores, each starting with a letter",
+            )
+            continue
+        parts = tuple(alias.split("."))
+        clash = next((_clash(alias, parts, o, w) for o, w in taken if _overlap(parts, o)), None)
+        if clash is not None:
+            report(where, clash)
+        else:
+            taken.append((parts, f"alias {alias!r} of {param.ros_name!r}"))
+
+
+def _clash(alias: str, parts: tuple[str, ...], other: tuple[str, ...], what: str) -> str:
+    if naming.ENTRY_KEY in other[: len(parts)]:
+        mapped = ".".join(other[: other.index(naming.ENTRY_KEY)])
+        return f"alias {alias!r} collides with the entries of mapped group {mapped!r}"
+    if len(parts) == len(other):
+        return f"alias {alias!r} collides with {what}"
+    where = "lies under" if len(parts) > len(other) else "is a namespace of"
+    return f"alias {alias!r} {where} {what}; a name cannot be both a value and a namespace"
