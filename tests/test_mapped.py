@@ -1,0 +1,315 @@
+"""Mapped groups (for_each) on real nodes: declared per key, grown and shrunk through services."""
+
+from __future__ import annotations
+
+import types
+from pathlib import Path
+
+import pytest
+from rcl_interfaces.msg import SetParametersResult
+from rclpy.parameter import Parameter
+
+import genparams
+from genparams.runtime import Changes, GroupMap, ParameterDeclarationError
+from tests.support import ROOT, RosHarness, ServiceClient, load_generated, unique_name
+
+ARM = """\
+genparams: 1
+name: arm
+parameters:
+  rate: {type: double, default: 10.0}
+  joints: {type: string_array, default: [shoulder, elbow]}
+  fingers: {type: string_array, default: [thumb]}
+  gains:
+    for_each: joints
+    p: {type: double, default: 1.0, validators: [{ge: 0.0}], description: Proportional.}
+    i: {type: double, default: 0.0}
+    offset: {type: int, default: 0, read_only: true}
+    limits:
+      max: {type: double, default: 2.0, range: {min: 0.0, max: 5.0}}
+    tips:
+      for_each: fingers
+      force: {type: double, default: 0.5}
+"""
+
+
+@pytest.fixture
+def arm(tmp_path: Path) -> types.ModuleType:
+    schema = tmp_path / "arm.yaml"
+    schema.write_text(ARM)
+    return load_generated(schema, tmp_path)
+
+
+def params_file(tmp_path: Path, body: str) -> list[str]:
+    """ROS args loading ``body`` (the ros__parameters of every node) from a params file."""
+    path = tmp_path / "params.yaml"
+    indented = "".join(f"    {line}\n" for line in body.splitlines())
+    path.write_text(f"/**:\n  ros__parameters:\n{indented}")
+    return ["--params-file", str(path)]
+
+
+def listed(client: ServiceClient, prefix: str) -> list[str]:
+    """Parameter names under ``prefix`` as `ros2 param list` sees them."""
+    response = client.harness.wait(client.client.list_parameters([prefix], 0))
+    return sorted(response.result.names)
+
+
+def _reason(result: SetParametersResult) -> str:
+    assert not result.successful
+    return str(result.reason)
+
+
+def test_one_group_per_key_read_through_a_mapping(ros: RosHarness, arm: types.ModuleType) -> None:
+    node = ros.node()
+    cfg = arm.ArmParams.declare(node)
+    client = ros.client(node)
+    assert listed(client, "gains") == [
+        f"gains.{joint}.{leaf}"
+        for joint in ("elbow", "shoulder")
+        for leaf in ("i", "limits.max", "offset", "p", "tips.thumb.force")
+    ]
+    assert isinstance(cfg.gains, GroupMap) and list(cfg.gains) == ["shoulder", "elbow"]
+    assert cfg.gains["elbow"].p == 1.0 and cfg.gains["elbow"].tips["thumb"].force == 0.5
+    assert cfg.gains["shoulder"].limits.max == 2.0
+    p, max_ = client.describe("gains.shoulder.p", "gains.elbow.limits.max")
+    assert (p.description, p.additional_constraints) == ("Proportional.", "must be >= 0.0")
+    assert max_.floating_point_range[0].to_value == 5.0
+    with pytest.raises(TypeError):
+        cfg.gains["wrist"] = cfg.gains["elbow"]
+    with pytest.raises(AttributeError, match="read-only"):
+        cfg.gains["elbow"].p = 2.0
+    assert cfg.to_dict()["gains"]["elbow"]["tips"] == {"thumb": {"force": 0.5}}
+    (result,) = client.set(Parameter("gains.elbow.p", value=-1.0))
+    assert _reason(result) == "gains.elbow.p: must be >= 0.0 (ge), got -1.0"
+    assert "read-only" in _reason(client.set(Parameter("gains.elbow.offset", value=3))[0])
+
+
+def test_map_grows_and_shrinks_through_services(
+    ros: RosHarness, arm: types.ModuleType, tmp_path: Path
+) -> None:
+    node = ros.node(args=params_file(tmp_path, "gains: {wrist: {p: 3.0, limits: {max: 4.0}}}"))
+    cfg = arm.ArmParams.declare(node)
+    client = ros.client(node)
+    before = cfg.snapshot()
+    seen: list[Changes[object]] = []
+    cfg.on_change(seen.append)
+
+    (result,) = client.set(Parameter("joints", value=["shoulder", "wrist"]))
+    assert result.successful
+    assert listed(client, "gains.wrist") == [
+        "gains.wrist.i",
+        "gains.wrist.limits.max",
+        "gains.wrist.offset",
+        "gains.wrist.p",
+        "gains.wrist.tips.thumb.force",
+    ]
+    assert listed(client, "gains.elbow") == []
+    assert client.get("gains.wrist.p", "gains.wrist.limits.max") == [3.0, 4.0]
+    assert list(cfg.gains) == ["shoulder", "wrist"] and cfg.joints == ("shoulder", "wrist")
+    assert cfg.gains["wrist"].p == 3.0 and cfg.gains["wrist"].limits.max == 4.0
+    # New entries carry their descriptors: ranges and read-only hold.
+    (max_,) = client.describe("gains.wrist.limits.max")
+    assert max_.floating_point_range[0].to_value == 5.0
+    assert "out of range" in _reason(client.set(Parameter("gains.wrist.limits.max", value=9.0))[0])
+    assert "read-only" in _reason(client.set(Parameter("gains.wrist.offset", value=1))[0])
+    # One consistent change: the key list and the entries move together.
+    (changes,) = seen
+    assert changes.before is before and list(before.gains) == ["shoulder", "elbow"]
+    assert list(changes.after.gains) == list(changes.after.joints) == ["shoulder", "wrist"]
+    moved = {(c.name, c.old, c.new) for c in changes}
+    assert ("gains.elbow.p", 1.0, None) in moved and ("gains.wrist.p", None, 3.0) in moved
+    assert ("joints", ("shoulder", "elbow"), ("shoulder", "wrist")) in moved
+
+    (result,) = client.set(Parameter("gains.wrist.p", value=0.5))
+    assert result.successful and cfg.gains["wrist"].p == 0.5
+
+    (result,) = client.set(Parameter("joints", Parameter.Type.STRING_ARRAY, []))
+    assert result.successful and len(cfg.gains) == 0 and listed(client, "gains") == []
+    assert cfg.snapshot().to_dict()["gains"] == {}
+
+
+def test_bad_override_for_a_new_key_rejects_the_set(
+    ros: RosHarness, arm: types.ModuleType, tmp_path: Path
+) -> None:
+    node = ros.node(args=params_file(tmp_path, "gains: {wrist: {p: -1.0, i: 2}}"))
+    cfg = arm.ArmParams.declare(node)
+    client = ros.client(node)
+    (result,) = client.set(Parameter("joints", value=["shoulder", "elbow", "wrist"]))
+    assert _reason(result) == (
+        "joints: cannot declare the new entries: "
+        "gains.wrist.i: override has the wrong type: expected double, got integer 2 "
+        "(ROS does not convert: write 2.0); "
+        "gains.wrist.p: override rejected: must be >= 0.0 (ge), got -1.0"
+    )
+    assert cfg.joints == ("shoulder", "elbow") and client.get("joints") == [["shoulder", "elbow"]]
+    assert listed(client, "gains.wrist") == [] and list(cfg.gains) == ["shoulder", "elbow"]
+
+
+def test_new_key_overrides_are_checked_at_declare_too(
+    ros: RosHarness, arm: types.ModuleType, tmp_path: Path
+) -> None:
+    args = params_file(tmp_path, "joints: [wrist]\ngains: {wrist: {p: -1.0}}")
+    node = ros.node(args=args)
+    with pytest.raises(ParameterDeclarationError) as caught:
+        arm.ArmParams.declare(node)
+    assert caught.value.problems == (
+        "gains.wrist.p: override rejected: must be >= 0.0 (ge), got -1.0",
+    )
+    assert not node.has_parameter("joints")
+
+
+def test_keys_named_like_fields_methods_and_keywords(
+    ros: RosHarness, arm: types.ModuleType
+) -> None:
+    node = ros.node()
+    cfg = arm.ArmParams.declare(node)
+    keys = ["rate", "snapshot", "p", "class", "gains"]
+    assert ros.client(node).set(Parameter("joints", value=keys))[0].successful
+    assert list(cfg.gains) == keys
+    assert cfg.rate == 10.0 and cfg.snapshot().gains["snapshot"].p == 1.0
+    assert cfg.gains["class"].i == 0.0 and cfg.gains["gains"].p == 1.0
+    node.set_parameters([Parameter("gains.rate.p", value=4.0)])
+    assert cfg.gains["rate"].p == 4.0 and cfg.rate == 10.0
+
+
+def test_key_that_is_not_a_name_token_is_rejected(ros: RosHarness, arm: types.ModuleType) -> None:
+    node = ros.node()
+    cfg = arm.ArmParams.declare(node)
+    client = ros.client(node)
+    (result,) = client.set(Parameter("joints", value=["shoulder", "left-arm"]))
+    assert _reason(result) == (
+        "joints: item 1 'left-arm' cannot name an entry of gains: "
+        "use letters, digits and underscores, starting with a letter (for_each)"
+    )
+    (result,) = client.set(Parameter("joints", value=["a", "a"]))
+    assert (
+        _reason(result)
+        == "joints: item 1 'a' repeats: each item names one entry of gains (for_each)"
+    )
+    assert cfg.joints == ("shoulder", "elbow")
+    (described,) = client.describe("joints")
+    assert "each item names an entry of gains" in described.additional_constraints
+
+    bad = ros.node(args=["-p", "fingers:=[thumb, '']"])
+    with pytest.raises(ParameterDeclarationError, match=r"fingers: override rejected: item 1 ''"):
+        arm.ArmParams.declare(bad)
+
+
+def test_under_a_prefix(ros: RosHarness, arm: types.ModuleType, tmp_path: Path) -> None:
+    node = ros.node(args=params_file(tmp_path, "left: {gains: {wrist: {i: 0.5}}}"))
+    cfg = arm.ArmParams.declare(node, prefix="left")
+    client = ros.client(node)
+    assert client.get("left.gains.elbow.p") == [1.0]
+    (result,) = client.set(Parameter("left.joints", value=["wrist"]))
+    assert result.successful
+    assert listed(client, "left.gains") == [
+        "left.gains.wrist.i",
+        "left.gains.wrist.limits.max",
+        "left.gains.wrist.offset",
+        "left.gains.wrist.p",
+        "left.gains.wrist.tips.thumb.force",
+    ]
+    assert cfg.gains["wrist"].i == 0.5 and listed(client, "gains") == []
+
+
+def test_nested_map_follows_both_key_lists(ros: RosHarness, arm: types.ModuleType) -> None:
+    node = ros.node(args=["-p", "gains.elbow.tips.index.force:=0.75"])
+    cfg = arm.ArmParams.declare(node)
+    client = ros.client(node)
+    assert client.set(Parameter("fingers", value=["thumb", "index"]))[0].successful
+    assert [list(cfg.gains[j].tips) for j in cfg.gains] == [["thumb", "index"]] * 2
+    assert cfg.gains["elbow"].tips["index"].force == 0.75
+    assert cfg.gains["shoulder"].tips["index"].force == 0.5
+    result = client.set_atomically(
+        Parameter("joints", value=["elbow", "wrist"]), Parameter("fingers", value=["index"])
+    )
+    assert result.successful
+    assert listed(client, "gains.wrist.tips") == ["gains.wrist.tips.index.force"]
+    assert listed(client, "gains.elbow.tips") == ["gains.elbow.tips.index.force"]
+    assert {j: list(cfg.gains[j].tips) for j in cfg.gains} == {
+        "elbow": ["index"],
+        "wrist": ["index"],
+    }
+    assert cfg.gains["elbow"].tips["index"].force == 0.75
+
+
+def test_atomic_change_of_keys_and_values_is_one_commit(
+    ros: RosHarness, arm: types.ModuleType
+) -> None:
+    node = ros.node()
+    cfg = arm.ArmParams.declare(node)
+    seen: list[Changes[object]] = []
+    cfg.on_change(seen.append)
+    result = ros.client(node).set_atomically(
+        Parameter("joints", value=["shoulder", "wrist"]),
+        Parameter("gains.shoulder.p", value=2.5),
+        Parameter("rate", value=20.0),
+    )
+    assert result.successful
+    (changes,) = seen
+    assert {"joints", "gains.shoulder.p", "rate", "gains.wrist.p", "gains.elbow.p"} <= changes.names
+    assert (cfg.gains["shoulder"].p, cfg.rate, list(cfg.gains)) == (
+        2.5,
+        20.0,
+        ["shoulder", "wrist"],
+    )
+
+
+def test_automatically_declared_entries_get_their_descriptors(
+    ros: RosHarness, arm: types.ModuleType, tmp_path: Path
+) -> None:
+    node = ros.node(
+        args=params_file(tmp_path, "gains: {wrist: {p: 3.0}, elbow: {p: 2.0}}"),
+        automatically_declare_parameters_from_overrides=True,
+    )
+    cfg = arm.ArmParams.declare(node)
+    assert cfg.gains["elbow"].p == 2.0
+    client = ros.client(node)
+    assert client.set(Parameter("joints", value=["wrist"]))[0].successful
+    assert cfg.gains["wrist"].p == 3.0
+    (p,) = client.describe("gains.wrist.p")
+    assert p.additional_constraints == "must be >= 0.0" and not p.dynamic_typing
+    assert "must be >= 0.0" in _reason(client.set(Parameter("gains.wrist.p", value=-2.0))[0])
+
+
+def test_undeclaring_an_entry_directly_is_refused(ros: RosHarness, arm: types.ModuleType) -> None:
+    node = ros.node()
+    cfg = arm.ArmParams.declare(node)
+    (result,) = ros.client(node).set(Parameter("gains.elbow.p"))
+    assert not result.successful and node.has_parameter("gains.elbow.p")
+    assert cfg.gains["elbow"].p == 1.0
+
+
+def test_defaults_expand_maps_without_ros(arm: types.ModuleType) -> None:
+    snap = arm.ArmParams.defaults({"joints": ["x"], "gains.x.p": 2.0})
+    assert list(snap.gains) == ["x"] and snap.gains["x"].p == 2.0
+    assert arm.ArmParams.defaults().gains["elbow"].tips["thumb"].force == 0.5
+    with pytest.raises(ParameterDeclarationError, match=r"gains\.y\.p: no such parameter"):
+        arm.ArmParams.defaults({"gains.y.p": 2.0})
+
+
+def test_mapped_groups_are_typed_for_mypy(tmp_path: Path) -> None:
+    """cfg.gains is a Mapping[str, GainsGroup]: entry fields keep their types under --strict."""
+    from mypy import api
+
+    schema = tmp_path / "arm.yaml"
+    schema.write_text(ARM)
+    # Unique module names: mypy's shared cache would otherwise replay an earlier run.
+    generated, user = unique_name("arm_params"), unique_name("use_arm")
+    (tmp_path / f"{generated}.py").write_text(genparams.generate(schema))
+    (tmp_path / f"{user}.py").write_text(
+        "from collections.abc import Mapping\n\n"
+        f"from {generated} import ArmParams, GainsGroup\n\n\n"
+        "def total(cfg: ArmParams) -> float:\n"
+        "    gains: Mapping[str, GainsGroup] = cfg.gains\n"
+        "    return sum(g.p for g in gains.values()) + cfg.gains['a'].tips['b'].force\n\n\n"
+        "def wrong(cfg: ArmParams) -> str:\n"
+        "    return cfg.gains['a'].limits.max\n"
+    )
+    files = [str(tmp_path / f"{generated}.py"), str(tmp_path / f"{user}.py")]
+    cache = ["--cache-dir", str(ROOT / ".mypy_cache")]
+    out, _, status = api.run(["--strict", *cache, "--no-error-summary", *files])
+    assert status == 1 and out.splitlines() == [
+        f"{files[1]}:12: error: Incompatible return value type "
+        '(got "float", expected "str")  [return-value]'
+    ]
