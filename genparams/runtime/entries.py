@@ -18,25 +18,38 @@ def map_chain(template_name: str) -> tuple[str, ...]:
     return tuple(".".join(parts[:i]) for i, part in enumerate(parts) if part == ENTRY_KEY)
 
 
+def _fill(parts: Sequence[str], keys: Sequence[str]) -> list[str]:
+    chosen = iter(keys)
+    return [next(chosen) if part == ENTRY_KEY else part for part in parts]
+
+
 def instantiate(template: CompiledParam, keys: Sequence[str]) -> CompiledParam:
     """The parameter of one entry: each ``*`` of the template replaced by the next key."""
-    chosen = iter(keys)
-    name = ".".join(next(chosen) if p == ENTRY_KEY else p for p in template.name.split("."))
-    chosen = iter(keys)
-    path = tuple(next(chosen) if p == ENTRY_KEY else p for p in template.attribute_path)
+    name = ".".join(_fill(template.name.split("."), keys))
+    path = tuple(_fill(template.attribute_path, keys))
     return replace(template, spec=replace(template.spec, name=name), attribute_path=path)
 
 
-def expand(compiled: CompiledSchema, values: Mapping[str, Any]) -> dict[str, CompiledParam]:
-    """Every entry's parameter for the key lists in ``values`` (maps whose key is absent: none)."""
+def expand(
+    compiled: CompiledSchema,
+    values: Mapping[str, Any],
+    existing: Mapping[str, CompiledParam] | None = None,
+) -> dict[str, CompiledParam]:
+    """Every entry's parameter for the key lists in ``values`` (maps whose key is absent: none).
+
+    Entries found in ``existing`` (by name) are reused rather than built again.
+    """
+    existing = existing or {}
     entries: dict[str, CompiledParam] = {}
     for template in compiled.templates.values():
         key_lists = [values.get(compiled.maps[m]) for m in map_chain(template.name)]
         if any(keys is None for keys in key_lists):
             continue
+        parts = template.name.split(".")
         for keys in itertools.product(*key_lists):  # type: ignore[arg-type]
-            entry = instantiate(template, keys)
-            entries[entry.name] = entry
+            name = ".".join(_fill(parts, keys))
+            entry = existing.get(name)
+            entries[name] = entry if entry is not None else instantiate(template, keys)
     return entries
 
 

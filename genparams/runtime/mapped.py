@@ -49,7 +49,8 @@ class MappedEntries:
         self.notices = notices
         self.full_name = functools.partial(join_prefix, binding.prefix)
         self.entries = dict(entries)  # relative name -> parameter, in key order
-        self.keys_by_full_name = {self.full_name(k): k for k in set(compiled.maps.values())}
+        self.key_names = frozenset(compiled.maps.values())  # relative names of key parameters
+        self.keys_by_full_name = {self.full_name(k): k for k in self.key_names}
 
     @classmethod
     def attach(
@@ -67,7 +68,7 @@ class MappedEntries:
         return mapped
 
     def changes_keys(self, updates: Mapping[CompiledParam, Any]) -> bool:
-        return any(self.full_name(param.name) in self.keys_by_full_name for param in updates)
+        return any(param.name in self.key_names for param in updates)
 
     def on_set(self, parameters: Sequence[Parameter]) -> SetParametersResult:
         """Reject a change of keys whose new entries cannot be declared (bad override, ...)."""
@@ -87,10 +88,11 @@ class MappedEntries:
             return _ACCEPTED
         values = {
             name: get_path(self.binding.current, self.compiled.parameters[name].attribute_path)
-            for name in self.keys_by_full_name.values()
+            for name in self.key_names
         }
         values.update(proposed)
-        added = {n: p for n, p in expand(self.compiled, values).items() if n not in self.entries}
+        expanded = expand(self.compiled, values, self.entries)
+        added = {n: p for n, p in expanded.items() if n not in self.entries}
         reader = OverrideReader(self.binding.node, self.full_name)
         _, problems = resolve_values(
             self.compiled, reader.read(added), self.full_name, parameters=added
@@ -116,7 +118,7 @@ class MappedEntries:
                     changed.append(Change(param.name, current[param.name], value))
                     current[param.name] = value
             fixed = {name: current[name] for name in self.compiled.parameters}
-            entries = expand(self.compiled, fixed)
+            entries = expand(self.compiled, fixed, self.entries)
             added = {n: p for n, p in entries.items() if n not in self.entries}
             removed = [n for n in self.entries if n not in entries]
             reader = OverrideReader(binding.node, self.full_name)
