@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import types
+import uuid
 from pathlib import Path
 
 import pytest
@@ -11,7 +12,7 @@ from rclpy.parameter import Parameter
 
 import genparams
 from genparams.runtime import Changes, GroupMap, ParameterDeclarationError
-from tests.support import ROOT, RosHarness, ServiceClient, load_generated, unique_name
+from tests.support import ROOT, RosHarness, ServiceClient, load_generated
 
 ARM = """\
 genparams: 1
@@ -294,8 +295,9 @@ def test_mapped_groups_are_typed_for_mypy(tmp_path: Path) -> None:
 
     schema = tmp_path / "arm.yaml"
     schema.write_text(ARM)
-    # Unique module names: mypy's shared cache would otherwise replay an earlier run.
-    generated, user = unique_name("arm_params"), unique_name("use_arm")
+    # Names unique across runs: mypy's shared cache would otherwise replay an earlier run.
+    run = uuid.uuid4().hex[:12]
+    generated, user = f"arm_params_{run}", f"use_arm_{run}"
     (tmp_path / f"{generated}.py").write_text(genparams.generate(schema))
     (tmp_path / f"{user}.py").write_text(
         "from collections.abc import Mapping\n\n"
