@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import os
+import subprocess
+import sys
 import types
 from pathlib import Path
 
@@ -9,7 +12,7 @@ import pytest
 from rclpy.parameter import Parameter
 
 from genparams.runtime import ParameterDeclarationError
-from tests.support import RosHarness, load_generated
+from tests.support import ROOT, RosHarness, load_generated
 
 DRIVE = """\
 genparams: 1
@@ -162,3 +165,27 @@ def test_old_names_under_a_prefix(ros: RosHarness, drive: types.ModuleType) -> N
 
 def test_defaults_accept_old_names(drive: types.ModuleType) -> None:
     assert drive.DriveParams.defaults({"wheel_base": 0.9}).wheels.base == 0.9
+
+
+def test_arm_demo_runs() -> None:
+    """The command of the README's "Mapped parameters" section."""
+    result = subprocess.run(
+        [sys.executable, str(ROOT / "examples" / "arm" / "demo.py")],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        env=dict(os.environ),
+    )
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.splitlines() == [
+        "max_speed = 2.0 (given as speed_limit in params.yaml)",
+        "  cfg.gains = {'shoulder': (1.0, 0.0), 'elbow': (1.0, 0.0)}",
+        "  node parameters under gains: ['elbow.i', 'elbow.p', 'shoulder.i', 'shoulder.p']",
+        "set joints := [shoulder, wrist]",
+        "  cfg.gains = {'shoulder': (1.0, 0.0), 'wrist': (2.5, 0.0)}",
+        "  node parameters under gains: ['shoulder.i', 'shoulder.p', 'wrist.i', 'wrist.p']",
+        "set joints := [left-arm] -> rejected: joints: item 0 'left-arm' cannot name an entry "
+        "of gains: use letters, digits and underscores, starting with a letter (for_each)",
+        "set speed_limit := 0.5 -> max_speed, speed_limit = [0.5, 0.5]; cfg: 0.5",
+    ]
+    assert len(warnings_about(result.stderr, "speed_limit")) == 1
