@@ -13,13 +13,16 @@ import dataclasses
 import difflib
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any
 
 from genparams.errors import Location, SchemaProblem
 from genparams.model import Schema
+from genparams.naming import ENTRY_KEY, is_ros_token
 from genparams.params_reader import ParamEntry, ParamsDocument, Section
 from genparams.ros_yaml import node_matches, ros_type_name
+from genparams.runtime.entries import expand
 from genparams.runtime.spec import CompiledParam
-from genparams.specs import compiled_param
+from genparams.specs import compiled_schema
 from genparams.types import ValueTypeError
 from genparams.validators import Custom
 
@@ -52,7 +55,14 @@ class _Checker:
         self.problems: list[SchemaProblem] = list(document.problems)
         self.warnings: list[SchemaProblem] = []
         self.deprecated = {p.ros_name: p.deprecated for p in schema.parameters if p.deprecated}
-        self.params = {p.ros_name: self.offline(compiled_param(p)) for p in schema.parameters}
+        compiled = compiled_schema(schema)
+        self.compiled = dataclasses.replace(
+            compiled,
+            parameters={n: self.offline(p) for n, p in compiled.parameters.items()},
+            templates={n: self.offline(p) for n, p in compiled.templates.items()},
+        )
+        self.params: dict[str, CompiledParam] = dict(self.compiled.parameters)
+        self.old_names: dict[str, ParamEntry] = {}  # old name -> the entry that used it
 
     def offline(self, param: CompiledParam) -> CompiledParam:
         """The checks that can run here: a custom validator whose module is missing is skipped."""
@@ -75,6 +85,18 @@ class _Checker:
         return dataclasses.replace(param, checks=tuple(kept))
 
     def run(self) -> None:
+        applied = self.applied_sections()
+        self.params.update(expand(self.compiled, self.key_lists(applied)))
+        for section in applied:
+            for entry in section.entries:
+                self.entry(entry)
+        self.renamed_twice(applied)
+        if self.document.problems and not self.document.sections:
+            return  # nothing could be read: a list of every required parameter adds only noise
+        for node in self.nodes or ("",):
+            self.required(node, [s for s in applied if not node or node_matches(s.node, node)])
+
+    def applied_sections(self) -> list[Section]:
         applied: list[Section] = []
         for section in self.document.sections:
             if self.nodes and not any(node_matches(section.node, n) for n in self.nodes):
@@ -87,17 +109,43 @@ class _Checker:
                 )
                 continue
             applied.append(section)
+        return applied
+
+    def key_lists(self, sections: list[Section]) -> dict[str, Any]:
+        """The items of each for_each parameter: as the file gives them (valid), else default."""
+        keys: dict[str, Any] = {}
+        for name in set(self.compiled.maps.values()):
+            param = self.params[name]
+            if not param.spec.required:
+                keys[name] = param.type.coerce_default(param.spec.default)
+        for section in sections:
             for entry in section.entries:
-                self.entry(entry)
-        if self.document.problems and not self.document.sections:
-            return  # nothing could be read: a list of every required parameter adds only noise
-        for node in self.nodes or ("",):
-            self.required(node, [s for s in applied if not node or node_matches(s.node, node)])
+                name = self.compiled.aliases.get(entry.name, entry.name)
+                if name in keys or name in self.compiled.maps.values():
+                    try:
+                        value = self.params[name].type.from_ros(entry.value)
+                    except ValueTypeError:
+                        continue
+                    if self.params[name].check(value) is None:
+                        keys[name] = value
+        return keys
 
     def entry(self, entry: ParamEntry) -> None:
         param = self.params.get(entry.name)
+        current = self.compiled.aliases.get(entry.name)
+        if param is None and current is not None:
+            self.warnings.append(
+                SchemaProblem(
+                    entry.key_location,
+                    entry.name,
+                    f"warning: deprecated: old name of {current}; write {current}",
+                )
+            )
+            self.old_names[entry.name] = entry
+            param = self.params[current]
         if param is None:
-            self.unknown(entry)
+            if not self.unmapped(entry):
+                self.unknown(entry)
             return
         if entry.name in self.deprecated:
             self.warnings.append(
@@ -122,6 +170,52 @@ class _Checker:
         if reason is not None:
             self.problems.append(SchemaProblem(entry.value_location, entry.name, reason))
 
+    def unmapped(self, entry: ParamEntry) -> bool:
+        """An entry of a mapped group for a key the key list does not hold; False if none."""
+        parts = entry.name.split(".")
+        for template in self.compiled.templates:
+            pattern = template.split(".")
+            if len(pattern) != len(parts) or any(
+                t not in (p, ENTRY_KEY) for p, t in zip(parts, pattern, strict=True)
+            ):
+                continue
+            keys = [p for p, t in zip(parts, pattern, strict=True) if t == ENTRY_KEY]
+            maps = [".".join(pattern[:i]) for i, t in enumerate(pattern) if t == ENTRY_KEY]
+            for key, mapped in zip(keys, maps, strict=True):
+                key_name = self.compiled.maps[mapped]
+                if not is_ros_token(key):
+                    message = (
+                        f"unknown parameter: {key!r} cannot be an item of {key_name} (not a "
+                        "name token): ROS would ignore it"
+                    )
+                    self.problems.append(SchemaProblem(entry.key_location, entry.name, message))
+                    return True
+            key_names = ", ".join(self.compiled.maps[m] for m in maps)
+            self.warnings.append(
+                SchemaProblem(
+                    entry.key_location,
+                    entry.name,
+                    f"warning: {'.'.join(keys)!r} is not among the items of {key_names}; "
+                    "the node uses this only once they hold it",
+                )
+            )
+            return True
+        return False
+
+    def renamed_twice(self, sections: list[Section]) -> None:
+        """An old name and the current one, given different values: the node refuses."""
+        given = {e.name: e for section in sections for e in section.entries}
+        for old, entry in self.old_names.items():
+            current = self.compiled.aliases[old]
+            if current in given and given[current].value != entry.value:
+                self.problems.append(
+                    SchemaProblem(
+                        entry.key_location,
+                        old,
+                        f"old name of {current}, which is given another value: keep only {current}",
+                    )
+                )
+
     def unknown(self, entry: ParamEntry) -> None:
         builtin = BUILTIN_PARAMETERS.get(entry.name)
         if builtin is not None:
@@ -137,7 +231,7 @@ class _Checker:
             return
         if entry.name.startswith(BUILTIN_PREFIXES):
             return
-        hint = suggestion(entry.name, [*self.params, *BUILTIN_PARAMETERS])
+        hint = suggestion(entry.name, [*self.params, *self.compiled.templates, *BUILTIN_PARAMETERS])
         self.problems.append(
             SchemaProblem(
                 entry.key_location,
@@ -147,7 +241,11 @@ class _Checker:
         )
 
     def required(self, node: str, sections: list[Section]) -> None:
-        given = {entry.name for section in sections for entry in section.entries}
+        given = {
+            self.compiled.aliases.get(entry.name, entry.name)
+            for section in sections
+            for entry in section.entries
+        }
         where = sections[-1].params_location if sections else Location(self.document.file, 1, 1)
         for name, param in self.params.items():
             if param.spec.required and name not in given:

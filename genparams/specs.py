@@ -8,8 +8,15 @@ worded, exactly as it is on a robot.
 
 from __future__ import annotations
 
-from genparams.model import Parameter
-from genparams.runtime.spec import CompiledParam, ParamSpec, compile_param
+from genparams.model import Parameter, Schema
+from genparams.runtime.spec import (
+    CompiledParam,
+    CompiledSchema,
+    ParamSpec,
+    SchemaSpec,
+    compile_param,
+    compile_schema,
+)
 
 
 def param_spec(parameter: Parameter) -> ParamSpec:
@@ -19,3 +26,15 @@ def param_spec(parameter: Parameter) -> ParamSpec:
 
 def compiled_param(parameter: Parameter) -> CompiledParam:
     return compile_param(param_spec(parameter))
+
+
+def compiled_schema(schema: Schema) -> CompiledSchema:
+    """What the runtime compiles from a generated module's spec: fixed parameters, the
+    templates of mapped groups (with their maps) and old names. No classes: no values."""
+    spec = SchemaSpec(
+        schema.name,
+        tuple(param_spec(p) for p in schema.parameters),
+        groups={},
+        maps=dict(schema.maps),
+    )
+    return compile_schema(spec)
