@@ -12,8 +12,10 @@ from dataclasses import dataclass
 
 from genparams import __version__
 from genparams.model import Group, Parameter, Schema
+from genparams.naming import ENTRY_KEY
 from genparams.params_file import ParamsFile, default_params_file
-from genparams.specs import compiled_param
+from genparams.runtime.spec import CompiledParam
+from genparams.specs import compiled_param, compiled_params
 from genparams.yaml_text import value_text
 
 FORMATS = ("markdown", "rst")
@@ -30,12 +32,14 @@ class ParameterDoc:
     required: bool
     read_only: bool
     deprecated: str  # "" unless deprecated: what to use instead
+    old_names: str = ""  # "" unless renamed: its old names, still accepted
 
 
 @dataclass(frozen=True)
 class NamespaceDoc:
     name: str  # dotted namespace, "" for the top level
     parameters: tuple[ParameterDoc, ...]
+    note: str = ""  # for a mapped group: how its entries are named
 
     @property
     def is_top_level(self) -> bool:
@@ -59,6 +63,7 @@ class DocsPage:
 
 
 def docs_page(schema: Schema) -> DocsPage:
+    compiled = compiled_params(schema)
     return DocsPage(
         title=schema.name,
         description=schema.description,
@@ -67,7 +72,11 @@ def docs_page(schema: Schema) -> DocsPage:
         source_name=schema.source_name,
         version=__version__,
         namespaces=tuple(
-            NamespaceDoc(group.ros_name, tuple(parameter_doc(p) for p in group.parameters))
+            NamespaceDoc(
+                group.ros_name,
+                tuple(parameter_doc(p, compiled[p.ros_name]) for p in group.parameters),
+                _mapped_note(group),
+            )
             for group in _documented_groups(schema.root)
         ),
         default_params=default_params_file(schema, comments=False),
@@ -82,8 +91,16 @@ def _documented_groups(group: Group) -> Iterator[Group]:
         yield from _documented_groups(child)
 
 
-def parameter_doc(parameter: Parameter) -> ParameterDoc:
-    checks = compiled_param(parameter).checks
+def _mapped_note(group: Group) -> str:
+    if not group.mapped_over:
+        return ""
+    return (
+        f"One entry per item of {group.mapped_over}; in the names below, {ENTRY_KEY} is the item."
+    )
+
+
+def parameter_doc(parameter: Parameter, compiled: CompiledParam | None = None) -> ParameterDoc:
+    checks = (compiled or compiled_param(parameter)).checks
     constraints = [check.describe() for check in checks]
     if parameter.additional_constraints:
         constraints.append(parameter.additional_constraints)
@@ -97,4 +114,5 @@ def parameter_doc(parameter: Parameter) -> ParameterDoc:
         required=parameter.required,
         read_only=parameter.read_only,
         deprecated=parameter.deprecated,
+        old_names=", ".join(parameter.aliases),
     )

@@ -12,13 +12,16 @@ Schema counts 30.0 as an integer: the description says it instead).
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Callable, Iterator
 from typing import Any
 
 from genparams.model import Group, Parameter, Schema
+from genparams.naming import ENTRY_KEY
 from genparams.params_file import parameter_comment
 from genparams.ros_yaml import PARAMS_KEY
-from genparams.specs import compiled_param
+from genparams.runtime.spec import CompiledParam, EntryKeys
+from genparams.specs import compiled_param, compiled_params
 from genparams.validators import (
     Bounds,
     Compare,
@@ -36,6 +39,7 @@ from genparams.yaml_text import value_text
 DRAFT = "https://json-schema.org/draft/2020-12/schema"
 _TOKEN = "(\\*\\*|\\*|[A-Za-z_][A-Za-z0-9_]*)"
 NODE_KEY_PATTERN = f"^/?{_TOKEN}(/{_TOKEN})*$"
+ENTRY_KEY_PATTERN = "^[A-Za-z][A-Za-z0-9_]*$"  # the key of a mapped entry: a name token
 # Parameters every rclpy node declares itself; a params file may set them for any node.
 BUILTIN_PARAMETERS: dict[str, dict[str, Any]] = {
     "use_sim_time": {"type": "boolean", "description": "Use /clock for time (every ROS node)."},
@@ -59,10 +63,16 @@ def params_file_schema(schema: Schema, *, partial: bool = False) -> dict[str, An
             "additionalProperties": False,
         }
     }
+    old_names = _OldNames(schema)
     for group in _all_groups(schema.root):
-        definitions[_group_name(group)] = _group_schema(group, required=not partial)
+        definitions[_group_name(group)] = _group_schema(group, old_names, required=not partial)
+        if group.mapped_over:
+            definitions[_map_name(group)] = _map_schema(group)
+    compiled = compiled_params(schema)
     for parameter in schema.parameters:
-        definitions[_parameter_name(parameter)] = parameter_schema(parameter)
+        definitions[_parameter_name(parameter)] = parameter_schema(
+            parameter, compiled[parameter.ros_name]
+        )
     return {
         "$schema": DRAFT,
         "title": f"ROS 2 params file for {schema.name}",
@@ -92,29 +102,61 @@ def _parameter_name(parameter: Parameter) -> str:
     return f"param.{parameter.ros_name}"
 
 
+def _map_name(group: Group) -> str:
+    return f"map.{group.ros_name}"
+
+
+def _map_schema(group: Group) -> dict[str, Any]:
+    """A mapped group: entries keyed by items of its for_each parameter, nested or dotted."""
+    patterns = {ENTRY_KEY_PATTERN: {"$ref": _group_ref(group)}}
+    for path, item in _descendants(group):
+        patterns[_dotted_pattern((ENTRY_KEY, *path))] = {"$ref": _ref(item, path)}
+    return {
+        "type": "object",
+        "description": f"One entry per item of {group.mapped_over}.",
+        "patternProperties": patterns,
+        "additionalProperties": False,
+    }
+
+
 def _descendants(group: Group) -> Iterator[tuple[tuple[str, ...], Group | Parameter]]:
-    """Every parameter and group below ``group``, with its path relative to ``group``."""
+    """Every parameter and group below ``group``, with its path relative to ``group``.
+
+    Below a mapped group, ``*`` holds the place of an entry's key.
+    """
     for parameter in group.parameters:
         yield (parameter.path[-1],), parameter
     for child in group.groups:
         yield (child.path[-1],), child
+        entry = (child.path[-1], ENTRY_KEY) if child.mapped_over else (child.path[-1],)
+        if child.mapped_over:
+            yield entry, child
         for path, item in _descendants(child):
-            yield (child.path[-1], *path), item
+            yield (*entry, *path), item
 
 
-def _group_schema(group: Group, *, required: bool) -> dict[str, Any]:
+def _dotted_pattern(path: tuple[str, ...]) -> str:
+    """A regex for the dotted key of ``path``, with any entry key where ``*`` stands."""
+    token = ENTRY_KEY_PATTERN[1:-1]
+    return "^" + "\\.".join(token if p == ENTRY_KEY else re.escape(p) for p in path) + "$"
+
+
+def _group_schema(group: Group, old_names: _OldNames, *, required: bool) -> dict[str, Any]:
     properties: dict[str, Any] = {}
+    patterns: dict[str, Any] = {}
     if not group.ros_name:
         properties.update(BUILTIN_PARAMETERS)
+        patterns["^qos_overrides\\."] = {}
     required_here: list[str] = []
     required_below: list[dict[str, Any]] = []
     for path, item in _descendants(group):
         key = ".".join(path)
-        if isinstance(item, Group):
-            properties[key] = {"$ref": _group_ref(item)}
+        ref = {"$ref": _ref(item, path)}
+        if ENTRY_KEY in path:
+            patterns[_dotted_pattern(path)] = ref
             continue
-        properties[key] = {"$ref": f"#/$defs/{_parameter_name(item)}"}
-        if not (required and item.required):
+        properties[key] = ref
+        if isinstance(item, Group) or not (required and item.required):
             continue
         if len(path) == 1:
             required_here.append(key)
@@ -123,14 +165,19 @@ def _group_schema(group: Group, *, required: bool) -> dict[str, Any]:
             # own schema then requires the rest.
             prefixes = [".".join(path[:n]) for n in range(1, len(path) + 1)]
             required_below.append({"anyOf": [{"required": [prefix]} for prefix in prefixes]})
+    properties.update(old_names.properties(group))
     result: dict[str, Any] = {
         "type": "object",
         "description": f"Parameters under {group.ros_name}." if group.ros_name else "Parameters.",
         "properties": properties,
         "additionalProperties": False,
     }
-    if not group.ros_name:
-        result["patternProperties"] = {"^qos_overrides\\.": {}}
+    if group.mapped_over:
+        result["description"] = (
+            f"One entry of {group.ros_name}, for an item of {group.mapped_over}."
+        )
+    if patterns:
+        result["patternProperties"] = patterns
     if required_here:
         result["required"] = required_here
     if required_below:
@@ -138,7 +185,69 @@ def _group_schema(group: Group, *, required: bool) -> dict[str, Any]:
     return result
 
 
-def parameter_schema(parameter: Parameter) -> dict[str, Any]:
+def _ref(item: Group | Parameter, path: tuple[str, ...]) -> str:
+    """What a key at ``path`` holds: a parameter, a namespace, a map, or one map entry."""
+    if isinstance(item, Parameter):
+        return _parameter_ref(item)
+    if item.mapped_over and path[-1] != ENTRY_KEY:
+        return f"#/$defs/{_map_name(item)}"
+    return _group_ref(item)
+
+
+def _parameter_ref(parameter: Parameter) -> str:
+    return f"#/$defs/{_parameter_name(parameter)}"
+
+
+class _OldNames:
+    """Old names (aliases) a params file may still use, placed in the namespaces they name.
+
+    An old name may lie in a namespace the schema no longer has (``limits.speed``):
+    that namespace is described here, holding only old names.
+    """
+
+    def __init__(self, schema: Schema) -> None:
+        self.names = [
+            (tuple(alias.split(".")), parameter)
+            for parameter in schema.parameters
+            for alias in parameter.aliases
+        ]
+        self.groups = {g.path for g in _all_groups(schema.root) if not g.mapped_over}
+
+    def properties(self, group: Group) -> dict[str, Any]:
+        if group.path not in self.groups:
+            return {}  # inside a mapped group: no old names there
+        depth = len(group.path)
+        below = [
+            (n[depth:], p) for n, p in self.names if n[:depth] == group.path and len(n) > depth
+        ]
+        return self._namespace(below, group.path)
+
+    def _namespace(
+        self, names: list[tuple[tuple[str, ...], Parameter]], at: tuple[str, ...]
+    ) -> dict[str, Any]:
+        """Properties for ``names`` (relative to ``at``), nested and dotted, as ROS reads both."""
+        properties: dict[str, Any] = {}
+        for path, parameter in names:
+            properties[".".join(path)] = {
+                "$ref": _parameter_ref(parameter),
+                "deprecated": True,
+                "description": f"Old name of {parameter.ros_name}: write {parameter.ros_name}.",
+            }
+            for n in range(1, len(path)):
+                prefix = path[:n]
+                if (*at, *prefix) in self.groups:
+                    continue  # an existing namespace lists the old names inside it
+                tails = [(p[n:], q) for p, q in names if p[:n] == prefix and len(p) > n]
+                properties[".".join(prefix)] = {
+                    "type": "object",
+                    "description": "Old names.",
+                    "properties": self._namespace(tails, (*at, *prefix)),
+                    "additionalProperties": False,
+                }
+        return properties
+
+
+def parameter_schema(parameter: Parameter, compiled: CompiledParam | None = None) -> dict[str, Any]:
     """The value schema of one parameter, with hover text and its default."""
     param_type = parameter.type
     kind = param_type.scalar_kind
@@ -151,7 +260,7 @@ def parameter_schema(parameter: Parameter) -> dict[str, Any]:
         result: dict[str, Any] = {"type": "array", "items": items}
     else:
         result = {"type": _JSON_TYPES[kind]}
-    for check in compiled_param(parameter).checks:
+    for check in (compiled or compiled_param(parameter)).checks:
         for keyword, value in _keywords(check, is_string=param_type.name == "string"):
             _add(result, keyword, value)
     result["description"] = hover_text(parameter)
@@ -246,6 +355,7 @@ _KEYWORD_BUILDERS: dict[type, Callable[[Any, bool], Keywords]] = {
     Unique: lambda c, s: [("uniqueItems", True)],
     Length: _length,
     Pattern: lambda c, s: [("pattern", c.regex)] if s else [("items", {"pattern": c.regex})],
+    EntryKeys: lambda c, s: [("items", {"pattern": ENTRY_KEY_PATTERN}), ("uniqueItems", True)],
 }
 
 

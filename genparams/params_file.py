@@ -69,15 +69,39 @@ def default_params_file(
         header=header,
         node_key=node_key_text(section_name(node)),
         params_key=PARAMS_KEY,
-        entries=tuple(_group_entries(schema.root, _STEP * 2, comments)),
+        entries=tuple(_group_entries(schema.root, _STEP * 2, comments, _default_keys(schema))),
     )
 
 
-def _group_entries(group: Group, indent: str, comments: bool) -> list[Entry]:
+def _default_keys(schema: Schema) -> dict[str, tuple[str, ...]]:
+    """The default items of every for_each parameter (none when it is required)."""
+    key_names = {key for _, key in schema.maps}
+    return {
+        p.ros_name: p.default for p in schema.parameters if p.ros_name in key_names and p.default
+    }
+
+
+def _group_entries(
+    group: Group, indent: str, comments: bool, keys: dict[str, tuple[str, ...]]
+) -> list[Entry]:
     entries = [_parameter_entry(p, indent, comments) for p in group.parameters]
     for child in group.groups:
-        entries.append(Entry(indent, key_text(child.path[-1]), "", (), disabled=False))
-        entries.extend(_group_entries(child, indent + _STEP, comments))
+        name = key_text(child.path[-1])
+        if not child.mapped_over:
+            entries.append(Entry(indent, name, "", (), disabled=False))
+            entries.extend(_group_entries(child, indent + _STEP, comments, keys))
+            continue
+        # A mapped group: one entry per default item of its for_each parameter.
+        note = (f"One entry per item of {child.mapped_over}.",) if comments else ()
+        items = keys.get(child.mapped_over, ())
+        if not items:
+            why = (f"{child.mapped_over} has no default items: no entries to write.",)
+            entries.append(Entry(indent, name, "", (*note, *why), disabled=True))
+            continue
+        entries.append(Entry(indent, name, "", note, disabled=False))
+        for item in items:
+            entries.append(Entry(indent + _STEP, key_text(item), "", (), disabled=False))
+            entries.extend(_group_entries(child, indent + _STEP * 2, comments, keys))
     return entries
 
 

@@ -38,3 +38,10 @@ def compiled_schema(schema: Schema) -> CompiledSchema:
         maps=dict(schema.maps),
     )
     return compile_schema(spec)
+
+
+def compiled_params(schema: Schema) -> dict[str, CompiledParam]:
+    """Every parameter and template by ROS name, with the checks a node runs on it (a
+    for_each parameter's items must name entries, beyond its own validators)."""
+    compiled = compiled_schema(schema)
+    return {**compiled.parameters, **compiled.templates}

@@ -10,13 +10,18 @@ from rclpy.parameter import Parameter
 
 from genparams.api import load_schema
 from genparams.cli import main
+from genparams.naming import ENTRY_KEY
 from genparams.ros_yaml import ros_scalar
 from genparams.yaml_text import double_text, string_text
 from tests.golden import EXAMPLE_SCHEMA, output_cases
 from tests.support import RosHarness, load_generated
 
 # A value for each required parameter, given with -p: the defaults file leaves them out.
-REQUIRED = {"example": {"serial": "ABCD1234"}, "tricky": {"legacy.token": "abc"}}
+REQUIRED = {
+    "example": {"serial": "ABCD1234"},
+    "tricky": {"legacy.token": "abc"},
+    "mapped": {"robot_id": "arm1"},
+}
 
 
 @pytest.mark.parametrize("case", output_cases(), ids=lambda case: case.name)
@@ -39,13 +44,15 @@ def test_defaults_file_round_trips_through_a_node(
     # Every value in the file reached the node as an override, with the declared type.
     overrides = node._parameter_overrides
     unwritable = {"numbers.subnormal"}  # ROS reads it back as a string
-    written = {p.ros_name for p in schema.parameters if not p.required} - unwritable
+    fixed = [p for p in schema.parameters if ENTRY_KEY not in p.path]  # not mapped entries
+    written = {p.ros_name for p in fixed if not p.required} - unwritable
     assert written <= set(overrides)
     assert not unwritable & set(overrides)
     params_class = getattr(load_generated(case.schema, tmp_path), schema.class_name)
     cfg = params_class.declare(node)
     assert cfg.to_dict() == params_class.defaults(required).to_dict()
-    for parameter in schema.parameters:
+    assert set(overrides) <= set(node._parameters)  # mapped entries too: none left unused
+    for parameter in fixed:
         assert node.get_parameter(parameter.ros_name).type_ == Parameter.Type(
             parameter.type.ros_type
         ), parameter.ros_name
