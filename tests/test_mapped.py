@@ -315,3 +315,26 @@ def test_mapped_groups_are_typed_for_mypy(tmp_path: Path) -> None:
         f"{files[1]}:12: error: Incompatible return value type "
         '(got "float", expected "str")  [return-value]'
     ]
+
+
+def test_required_leaf_of_a_new_entry_must_come_from_an_override(
+    ros: RosHarness, tmp_path: Path
+) -> None:
+    schema = tmp_path / "tools.yaml"
+    schema.write_text(
+        "genparams: 1\nname: tools\nparameters:\n"
+        "  names: {type: string_array, default: []}\n"
+        "  tool:\n    for_each: names\n    serial: {type: string}\n"
+    )
+    module = load_generated(schema, tmp_path)
+    node = ros.node(args=["-p", "tool.drill.serial:=D1"])
+    cfg = module.ToolsParams.declare(node)
+    assert len(cfg.tool) == 0
+    client = ros.client(node)
+    (result,) = client.set(Parameter("names", value=["drill", "saw"]))
+    assert _reason(result) == (
+        "names: cannot declare the new entries: tool.saw.serial: required parameter is not set "
+        "(pass -p tool.saw.serial:=<string> or set it in a params file)"
+    )
+    assert client.set(Parameter("names", value=["drill"]))[0].successful
+    assert cfg.tool["drill"].serial == "D1"
