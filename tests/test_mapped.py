@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import gc
+import sys
 import types
 import uuid
 from pathlib import Path
@@ -310,7 +312,13 @@ def test_mapped_groups_are_typed_for_mypy(tmp_path: Path) -> None:
     )
     files = [str(tmp_path / f"{generated}.py"), str(tmp_path / f"{user}.py")]
     cache = ["--cache-dir", str(ROOT / ".mypy_cache")]
-    out, _, status = api.run(["--strict", *cache, "--no-error-summary", *files])
+    # mypy tunes the garbage collector and recursion limit of the process it runs in.
+    threshold, limit = gc.get_threshold(), sys.getrecursionlimit()
+    try:
+        out, _, status = api.run(["--strict", *cache, "--no-error-summary", *files])
+    finally:
+        gc.set_threshold(*threshold)
+        sys.setrecursionlimit(limit)
     assert status == 1 and out.splitlines() == [
         f"{files[1]}:12: error: Incompatible return value type "
         '(got "float", expected "str")  [return-value]'
