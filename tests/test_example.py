@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import signal
 import subprocess
 import sys
 
@@ -26,14 +27,23 @@ def test_committed_module_is_up_to_date() -> None:
 
 
 def test_demo_tunes_a_node_in_another_process() -> None:
-    result = subprocess.run(
+    # Its own session, so a timeout also stops the camera node the demo started.
+    demo = subprocess.Popen(
         [sys.executable, str(EXAMPLE / "demo.py")],
-        capture_output=True,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
         text=True,
-        timeout=120,
         env=dict(os.environ),
+        start_new_session=True,
     )
-    assert result.returncode == 0, result.stderr
+    try:
+        stdout, stderr = demo.communicate(timeout=120)
+    finally:
+        if demo.poll() is None:
+            os.killpg(demo.pid, signal.SIGKILL)
+            demo.wait()
+    assert demo.returncode == 0, stderr
+    result = subprocess.CompletedProcess(demo.args, demo.returncode, stdout, stderr)
     out = result.stdout
     assert "get serial -> 'CAM00042'" in out
     assert "set camera.fps = 15.0 -> accepted" in out
