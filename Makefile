@@ -18,7 +18,7 @@ venv: $(VENV)/.installed
 
 ## Generate the example's module and run the demo: a node in its own process, tuned over services.
 demo: venv
-	$(VENV)/bin/genparams generate $(EXAMPLE)/camera_driver.yaml -o $(EXAMPLE)/camera_node/camera_driver_params.py
+	cd $(EXAMPLE) && ../../$(VENV)/bin/genparams generate
 	$(PYTHON) $(EXAMPLE)/demo.py
 
 ## Lint, type-check (package, examples and generated code) and run every test.
