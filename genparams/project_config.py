@@ -77,15 +77,6 @@ def load_project_config(pyproject: Path) -> ProjectConfig:
     return ProjectConfig(pyproject, _modules(pyproject, table))
 
 
-def has_project_config(pyproject: Path) -> bool:
-    """True when ``pyproject`` exists and has a ``[tool.genparams]`` table."""
-    try:
-        document = tomllib.loads(pyproject.read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError):
-        return False
-    return "genparams" in document.get("tool", {})
-
-
 def _modules(pyproject: Path, table: Any) -> tuple[ModuleTarget, ...]:
     where = f"{pyproject}: tool.genparams"
     if not isinstance(table, Mapping):
