@@ -115,3 +115,34 @@ def wait_for_node(
             raise TimeoutError(f"parameter services of {target} did not appear in {timeout} s")
         ros.executor.spin_once(timeout_sec=0.1)
     return ServiceClient(ros, target)
+
+
+def copy_repository(destination: Path) -> Path:
+    """The repository's files as a user would get them (tracked or not ignored), in ``destination``.
+
+    Builds of genparams itself run on this copy, so they never write into the checkout.
+    """
+    listed = subprocess.run(
+        ["git", "ls-files", "--cached", "--others", "--exclude-standard", "-z"],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout
+    for name in filter(None, listed.split("\0")):
+        source = ROOT / name
+        if source.is_file():
+            target = destination / name
+            target.parent.mkdir(parents=True, exist_ok=True)
+            shutil.copy2(source, target)
+    return destination
+
+
+def build_wheel(source: Path, destination: Path) -> Path:
+    """Build genparams' wheel the way pip does for `pip install .` (isolated, with hatchling)."""
+    run(
+        [sys.executable, "-m", "pip", "wheel", "--no-deps", "--quiet", "-w", destination, "."],
+        source,
+    )
+    (wheel,) = destination.glob("genparams-*.whl")
+    return wheel
