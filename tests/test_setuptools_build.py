@@ -135,3 +135,23 @@ def test_missing_genparams_table_is_a_clear_error(tmp_path: Path) -> None:
     code, output = setup_py_build(package)
     assert code != 0
     assert f"genparams: {package / 'pyproject.toml'}: no [tool.genparams] table" in output
+
+
+def test_pyproject_only_package_generates_while_pip_builds_the_wheel(tmp_path: Path) -> None:
+    package = tmp_path / "plain"
+    (package / "src" / "plain").mkdir(parents=True)
+    (package / "src" / "plain" / "__init__.py").write_text("")
+    (package / "params.yaml").write_text(GOOD_SCHEMA)
+    (package / "pyproject.toml").write_text(
+        '[build-system]\nrequires = ["setuptools>=61", "genparams"]\n'
+        'build-backend = "setuptools.build_meta"\n\n'
+        '[project]\nname = "plain"\nversion = "1.0"\n\n'
+        '[tool.setuptools.cmdclass]\nbuild_py = "genparams.setuptools.build_py"\n\n'
+        '[[tool.genparams.modules]]\nschema = "params.yaml"\noutput = "src/plain/demo_params.py"\n'
+    )
+    run([sys.executable, "-m", "pip", "wheel", *PIP_OFFLINE, "-w", tmp_path / "dist", "."], package)
+    (wheel,) = (tmp_path / "dist").glob("plain-*.whl")
+    with zipfile.ZipFile(wheel) as archive:
+        generated = archive.read("plain/demo_params.py").decode()
+    assert generated == genparams.generate(package / "params.yaml")
+    assert not (package / "src" / "plain" / "demo_params.py").exists()
