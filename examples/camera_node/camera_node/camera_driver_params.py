@@ -55,9 +55,7 @@ class ControlPidGroup(_Group):
 class ControlGroup(_Group):
     "Parameters under control."
 
-    __slots__ = (
-        "pid",
-    )
+    __slots__ = ("pid",)
 
     pid: ControlPidGroup
     "Namespace control.pid."
