@@ -11,16 +11,18 @@ from __future__ import annotations
 
 import difflib
 import threading
+import time
 import traceback
 from collections.abc import Callable, Generator, Mapping
 from typing import Any, Generic, TypeVar, cast
 
-from rcl_interfaces.msg import ParameterEvent, ParameterType
+from rcl_interfaces.msg import ParameterEvent
 from rclpy.node import Node
 from rclpy.parameter import Parameter, parameter_value_to_python
 from rclpy.parameter_client import AsyncParameterClient
 from rclpy.subscription import Subscription
 from rclpy.task import Future
+from rclpy.timer import Timer
 
 from genparams.naming import join_prefix
 from genparams.runtime.binding import check_prefix
@@ -87,22 +89,38 @@ class RemoteParams(Generic[P]):
         def answered(response_future: Future) -> None:
             try:
                 response = response_future.result()
+                if len(response.values) != len(self.full_names):
+                    # The service answers nothing at all when one name is not declared.
+                    self.client.list_parameters([], 0, report_missing)
+                    return
                 values = self.typed_values(zip(self.full_names, response.values, strict=True))
                 result.set_result(self.snapshot(values))
             except Exception as exc:  # handed to whoever waits on the future
                 result.set_exception(exc)
 
+        def report_missing(response_future: Future) -> None:
+            try:
+                declared = set(response_future.result().result.names)
+                missing = [full for full in self.full_names.values() if full not in declared]
+                result.set_exception(
+                    self.not_following([f"{full}: not declared" for full in missing])
+                )
+            except Exception as exc:
+                result.set_exception(exc)
+
         self.client.get_parameters(list(self.full_names.values()), answered)
         return result
+
+    def not_following(self, problems: list[str]) -> RemoteParameterError:
+        return RemoteParameterError(
+            f"{self.target} does not follow {self.compiled.spec.name}: " + "; ".join(problems)
+        )
 
     def typed_values(self, pairs: Any) -> dict[str, Any]:
         values: dict[str, Any] = {}
         problems: list[str] = []
         for name, message in pairs:
             full = self.full_names[name]
-            if message.type == ParameterType.PARAMETER_NOT_SET:
-                problems.append(f"{full}: not declared on {self.target}")
-                continue
             try:
                 values[name] = self.compiled.parameters[name].type.from_ros(
                     parameter_value_to_python(message)
@@ -110,9 +128,7 @@ class RemoteParams(Generic[P]):
             except ValueTypeError as exc:
                 problems.append(f"{full}: {exc}")
         if problems:
-            raise RemoteParameterError(
-                f"{self.target} does not follow {self.compiled.spec.name}: " + "; ".join(problems)
-            )
+            raise self.not_following(problems)
         return values
 
     def snapshot(self, values: Mapping[str, Any]) -> P:
@@ -185,9 +201,9 @@ class RemoteParams(Generic[P]):
     def watch(self, callback: Callable[[Changes[P]], None]) -> RemoteWatch[P]:
         """Call ``callback`` with the typed changes of each accepted set on the target.
 
-        Returns a handle: ``ready`` resolves to the first snapshot (changes are
-        reported from there on), ``latest`` is the newest known snapshot, and
-        ``cancel()`` stops watching.
+        Returns a handle: ``ready`` resolves to the first snapshot (every change
+        from there on is reported), ``latest`` is the newest known snapshot, and
+        ``cancel()`` stops watching. The client node must be spun by an executor.
         """
         return RemoteWatch(self, callback)
 
@@ -204,7 +220,14 @@ def _check_one(param: CompiledParam, value: Any) -> str | tuple[Any]:
 
 
 class RemoteWatch(Generic[P]):
-    """Mirrors the target's parameters from its parameter events; see ``RemoteParams.watch``."""
+    """Mirrors the target's parameters from its parameter events; see ``RemoteParams.watch``.
+
+    Parameter events are not replayed to late subscribers, so the first snapshot is
+    read only once the event subscription is connected (or after ``CONNECT_TIMEOUT``):
+    from ``ready`` on, no change goes unreported.
+    """
+
+    CONNECT_TIMEOUT = 5.0
 
     def __init__(self, remote: RemoteParams[P], callback: Callable[[Changes[P]], None]) -> None:
         self.remote = remote
@@ -212,27 +235,46 @@ class RemoteWatch(Generic[P]):
         self.lock = threading.Lock()  # events and the first snapshot may arrive on two threads
         self.latest: P | None = None
         self.early: list[ParameterEvent] = []  # events that came before the first snapshot
+        self.ready: TypedFuture[P] = TypedFuture()
         self.subscription: Subscription | None = remote.client.on_parameter_event(self.on_event)
-        self.ready = remote.get()
-        self.ready.add_done_callback(self.on_first_snapshot)
+        self.connect_deadline = time.monotonic() + self.CONNECT_TIMEOUT
+        self.connecting: Timer | None = remote.node.create_timer(0.02, self.read_when_connected)
 
     def cancel(self) -> None:
-        if self.subscription is not None:
-            self.remote.node.destroy_subscription(self.subscription)
-            self.subscription = None
+        """Stop watching; the callback is not called again."""
+        with self.lock:
+            self.stop_connecting()
+            if self.subscription is not None:
+                self.remote.node.destroy_subscription(self.subscription)
+                self.subscription = None
+
+    def stop_connecting(self) -> None:
+        if self.connecting is not None:
+            self.remote.node.destroy_timer(self.connecting)
+            self.connecting = None
+
+    def read_when_connected(self) -> None:
+        with self.lock:
+            if self.connecting is None or self.subscription is None:
+                return
+            publishers = self.remote.node.count_publishers(self.subscription.topic_name)
+            connected = self.subscription.get_publisher_count() >= publishers
+            if not connected and time.monotonic() < self.connect_deadline:
+                return
+            self.stop_connecting()
+        self.remote.get().add_done_callback(self.on_first_snapshot)
 
     def on_first_snapshot(self, future: Future) -> None:
         with self.lock:
             try:
                 self.latest = future.result()
-            except Exception:
-                self.remote.node.get_logger().error(
-                    f"{self.remote!r}: cannot read the first snapshot:\n{traceback.format_exc()}"
-                )
+            except Exception as exc:
+                self.ready.set_exception(exc)
                 return
             early, self.early = self.early, []
             for event in early:
                 self.apply(event)
+        self.ready.set_result(self.latest)
 
     def on_event(self, event: ParameterEvent) -> None:
         if event.node != self.remote.target:
