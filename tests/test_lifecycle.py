@@ -38,7 +38,7 @@ def module(tmp_path: Path) -> types.ModuleType:
 def make_driver(module: types.ModuleType, ros: RosHarness, args: list[str]) -> Any:
     params_cls = module.MotionParams
 
-    class Driver(LifecycleNode):  # type: ignore[misc]
+    class Driver(LifecycleNode):
         def __init__(self) -> None:
             super().__init__(
                 unique_name("lifecycle"), context=ros.context, cli_args=["--ros-args", *args]
@@ -59,7 +59,7 @@ def make_driver(module: types.ModuleType, ros: RosHarness, args: list[str]) -> A
 def test_lifecycle_node_declares_and_validates_through_services(
     ros: RosHarness, module: types.ModuleType
 ) -> None:
-    driver = ros.add_node(make_driver(module, ros, ["-p", "max_speed:=4.0"]))
+    driver: Any = ros.add_node(make_driver(module, ros, ["-p", "max_speed:=4.0"]))
     client = ros.client(driver)
     assert client.get("min_speed", "max_speed", "frame") == [0.5, 4.0, "base_link"]
     (descriptor,) = client.describe("max_speed")

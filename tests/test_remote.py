@@ -142,7 +142,7 @@ def test_remote_calls_can_be_awaited(ros: RosHarness, module: types.ModuleType) 
         before = await remote.get()
         await remote.set({"max_speed": before.max_speed + 1.5})
         after = await remote.get()
-        return after.max_speed
+        return float(after.max_speed)
 
     assert ros.wait(ros.executor.create_task(speed_up)) == 3.5
     assert cfg.max_speed == 3.5
@@ -193,9 +193,9 @@ def test_a_target_that_does_not_follow_the_schema_is_named(
         f"{name} does not follow motion: drive.mode: not declared; drive.wheels: not declared; "
         "max_speed: not declared; robot: not declared"
     )
-    target.declare_parameters(
-        "", [("drive.mode", "eco"), ("drive.wheels", [1]), ("max_speed", 2.0), ("robot", "r")]
-    )
+    for parameter, value in (("drive.mode", "eco"), ("drive.wheels", [1]), ("max_speed", 2.0)):
+        target.declare_parameter(parameter, value)
+    target.declare_parameter("robot", "r")
     with pytest.raises(RemoteParameterError) as caught:
         ros.wait(remote.get())
     assert str(caught.value) == (
