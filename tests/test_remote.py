@@ -13,7 +13,7 @@ from rcl_interfaces.msg import SetParametersResult
 from rclpy.parameter import Parameter
 
 from genparams.runtime import Changes, RemoteParameterError, RemoteSetError
-from tests.support import RosHarness, load_generated
+from tests.support import ROOT, RosHarness, load_generated
 
 MOTION = """\
 genparams: 1
@@ -202,3 +202,40 @@ def test_a_target_that_does_not_follow_the_schema_is_named(
         f"{name} does not follow motion: "
         "min_speed: expected double, got integer 1 (ROS does not convert: write 1.0)"
     )
+
+
+def test_mapped_entries_through_remote(ros: RosHarness, tmp_path: Path) -> None:
+    arm = load_generated(ROOT / "examples" / "arm" / "arm.yaml", tmp_path)
+    target = ros.node()
+    cfg = arm.ArmParams.declare(target)
+    remote = arm.ArmParams.remote(ros.node(), target.get_fully_qualified_name())
+    assert remote.wait_for_services(timeout_sec=10.0)
+
+    snapshot = ros.wait(remote.get())
+    assert snapshot == cfg.snapshot()
+    assert {key: entry.p for key, entry in snapshot.gains.items()} == {
+        "shoulder": 1.0,
+        "elbow": 1.0,
+    }
+    ros.wait(remote.set({"gains.elbow.p": 2}))
+    assert cfg.gains["elbow"].p == 2.0
+    with pytest.raises(RemoteSetError, match=r"gains\.elbow\.i: must be >= 0\.0"):
+        remote.set({"gains.elbow.i": -1.0}).result()
+
+    seen: list[Changes[Any]] = []
+    watch = remote.watch(seen.append)
+    ros.wait(watch.ready)
+    target.set_parameters([Parameter("gains.shoulder.i", value=0.5)])
+    spin_until(ros, lambda: len(seen) == 1)
+    assert [(c.name, c.old, c.new) for c in seen[0]] == [("gains.shoulder.i", 0.0, 0.5)]
+    # A new key list declares and undeclares entries: the watch reads them all again.
+    target.set_parameters([Parameter("joints", value=["shoulder", "wrist"])])
+    spin_until(ros, lambda: len(seen) == 2 and watch.latest == cfg.snapshot())
+    assert sorted((c.name, c.old, c.new) for c in seen[1]) == [
+        ("gains.elbow.i", 0.0, None),
+        ("gains.elbow.p", 2.0, None),
+        ("gains.wrist.i", None, 0.0),
+        ("gains.wrist.p", None, 1.0),
+        ("joints", ("shoulder", "elbow"), ("shoulder", "wrist")),
+    ]
+    watch.cancel()
