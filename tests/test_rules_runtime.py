@@ -158,3 +158,21 @@ def test_defaults_check_rules_without_ros(module: types.ModuleType) -> None:
     assert module.MotionParams.defaults({"min_speed": 1.0}).min_speed == 1.0
     with pytest.raises(ParameterDeclarationError, match="rule 'speed_order' broken"):
         module.MotionParams.defaults({"min_speed": 3.0})
+
+
+def test_rules_hold_when_set_through_an_old_name(ros: RosHarness, tmp_path: Path) -> None:
+    schema = tmp_path / "renamed.yaml"
+    schema.write_text(
+        "genparams: 1\nname: renamed\nparameters:\n"
+        "  min_speed: {type: double, default: 0.5}\n"
+        "  max_speed: {type: double, default: 2.0, aliases: [speed_limit]}\n"
+        "rules:\n  - {name: speed_order, check: min_speed <= max_speed}\n"
+    )
+    module = load_generated(schema, tmp_path)
+    node = ros.node()
+    cfg = module.RenamedParams.declare(node)
+    (result,) = ros.client(node).set(Parameter("speed_limit", value=0.25))
+    assert "rule 'speed_order' broken" in _reason(result)
+    assert cfg.max_speed == 2.0 and node.get_parameter("speed_limit").value == 2.0
+    (result,) = ros.client(node).set(Parameter("speed_limit", value=3.0))
+    assert result.successful and cfg.max_speed == 3.0
