@@ -1,0 +1,65 @@
+"""Build-side scenarios: code generation, and importing the generated module."""
+
+from __future__ import annotations
+
+import shutil
+import sys
+from pathlib import Path
+
+import genparams
+from bench.measure import Result, child_environment, run_probe, time_calls, time_process
+from bench.workspace import Prepared
+
+GENERATE_PROCESS = "genparams generate (whole process)"
+GENERATE_CALL = "genparams.generate() (in process)"
+
+
+def codegen(prepared: Prepared, repeats: int) -> list[Result]:
+    size, schema = prepared.schema.size, prepared.schema_path
+    output = prepared.module_path.with_name(f"codegen_{size}.py")
+    command = [sys.executable, "-m", "genparams", "generate", str(schema), "-o", str(output)]
+    process = tuple(time_process(command) for _ in range(repeats))
+    if output.read_text(encoding="utf-8") != prepared.module_path.read_text(encoding="utf-8"):
+        raise RuntimeError("genparams generate and genparams.generate() disagree")
+    output.unlink()
+    in_process = time_calls(lambda: genparams.generate(schema), repeats)
+    return [
+        Result("codegen", GENERATE_PROCESS, size, "s", process),
+        Result("codegen", GENERATE_CALL, size, "s", in_process),
+    ]
+
+
+GENPARAMS_COLD = "genparams module, cold (no .pyc)"
+PLAIN_COLD = "hand-written module, cold (no .pyc)"
+GENPARAMS_WARM = "genparams module, warm (.pyc cached)"
+PLAIN_WARM = "hand-written module, warm (.pyc cached)"
+
+
+def import_time(prepared: Prepared, repeats: int) -> list[Result]:
+    directory = prepared.module_path.parent
+    cache = directory / "__pycache__"
+    results = []
+    modules = (
+        (prepared.schema.module_name, GENPARAMS_COLD, GENPARAMS_WARM),
+        (prepared.schema.plain_module_name, PLAIN_COLD, PLAIN_WARM),
+    )
+    for module, cold_label, warm_label in modules:
+        cold = []
+        for _ in range(repeats):
+            shutil.rmtree(cache, ignore_errors=True)
+            cold.append(_probe(directory, module, write_bytecode=False))
+        _probe(directory, module, write_bytecode=True)  # leaves the .pyc behind
+        warm = tuple(_probe(directory, module, write_bytecode=True) for _ in range(repeats))
+        results.append(Result("import", cold_label, prepared.schema.size, "s", tuple(cold)))
+        results.append(Result("import", warm_label, prepared.schema.size, "s", warm))
+    return results
+
+
+def _probe(directory: Path, module: str, *, write_bytecode: bool) -> float:
+    env = child_environment()
+    if not write_bytecode:
+        env["PYTHONDONTWRITEBYTECODE"] = "1"
+    else:
+        env.pop("PYTHONDONTWRITEBYTECODE", None)
+    seconds: float = run_probe("bench.import_probe", [str(directory), module], env)["seconds"]
+    return seconds
