@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import gc
 import shutil
 import sys
 from pathlib import Path
@@ -27,6 +28,41 @@ def codegen(prepared: Prepared, repeats: int) -> list[Result]:
         Result("codegen", GENERATE_PROCESS, size, "s", process),
         Result("codegen", GENERATE_CALL, size, "s", in_process),
     ]
+
+
+STAGE_LOAD = "load YAML (loader.load_yaml)"
+STAGE_CHECK = "check against the JSON Schema (schema_check)"
+STAGE_BUILD = "build the model (builder)"
+STAGE_RENDER = "render the module (render)"
+
+
+def codegen_stages(prepared: Prepared, repeats: int) -> list[Result]:
+    """Where in-process generation time goes, one pipeline stage at a time."""
+    from genparams.builder import build_schema
+    from genparams.loader import load_yaml
+    from genparams.render import render_module
+    from genparams.schema_check import check_document
+
+    text = prepared.schema_path.read_text(encoding="utf-8")
+    file = str(prepared.schema_path)
+    document = load_yaml(text, file)
+    schema = build_schema(document)
+    stages = {
+        STAGE_LOAD: lambda: load_yaml(text, file),
+        STAGE_CHECK: lambda: check_document(document),
+        STAGE_BUILD: lambda: build_schema(document),
+        STAGE_RENDER: lambda: render_module(schema),
+    }
+    results = []
+    for label, stage in stages.items():
+        # As in genparams.generate(), which pauses the cycle collector around the pipeline.
+        gc.disable()
+        try:
+            samples = time_calls(stage, repeats)
+        finally:
+            gc.enable()
+        results.append(Result("codegen_stages", label, prepared.schema.size, "s", samples))
+    return results
 
 
 GENPARAMS_COLD = "genparams module, cold (no .pyc)"

@@ -29,9 +29,18 @@ SECTIONS: tuple[Section, ...] = (
         "codegen",
         "Code generation",
         "Schema file to generated module: load, check, build, render. The whole process "
-        "includes starting Python and importing the generator; in process, caches are warm.",
+        "(wall-clock) includes starting Python and importing the generator; in process "
+        "(CPU time), its caches are warm.",
         (build.GENERATE_PROCESS, build.GENERATE_CALL),
         per_parameter=(build.GENERATE_CALL,),
+    ),
+    Section(
+        "codegen_stages",
+        "Code generation, stage by stage",
+        "The in-process pipeline timed one stage at a time (CPU time), to show where "
+        "generation time goes.",
+        (build.STAGE_LOAD, build.STAGE_CHECK, build.STAGE_BUILD, build.STAGE_RENDER),
+        per_parameter=(build.STAGE_LOAD, build.STAGE_CHECK, build.STAGE_BUILD, build.STAGE_RENDER),
     ),
     Section(
         "import",

@@ -102,6 +102,7 @@ def run_size(
 
     if "codegen" in only:
         step("codegen", lambda: build_scenarios.codegen(prepared, repeats))
+        step("codegen stages", lambda: build_scenarios.codegen_stages(prepared, repeats))
     if "import" in only:
         step("import", lambda: build_scenarios.import_time(prepared, repeats))
     if "declare" in only:

@@ -84,7 +84,7 @@ def test_quick_benchmark_writes_every_scenario(tmp_path: Path) -> None:
     expected = {(s.scenario, v) for s in SECTIONS for v in s.variants}
     assert measured == expected
     for row in rows:
-        assert row["n"] == "10" and row["repeats"] == "1"
+        assert row["n"] == "10" and int(row["repeats"]) >= 1
         assert float(row["min"]) >= 0 and float(row["median"]) >= float(row["min"])
     report = (tmp_path / "benchmarks.md").read_text(encoding="utf-8")
     for section in SECTIONS:
