@@ -26,7 +26,7 @@ class Prepared:
 
 def prepare(size: int, directory: Path) -> Prepared:
     """Write the schema, generate its module, and write the hand-written equivalent."""
-    from genparams.runtime.binding import descriptor_for
+    from genparams.runtime.declaring import descriptor_for
     from genparams.runtime.spec import compile_schema
 
     schema = bench_schema(size)
