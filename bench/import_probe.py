@@ -20,9 +20,9 @@ def main(directory: str, module_name: str) -> None:
     import genparams.runtime  # noqa: F401
 
     sys.path.insert(0, directory)
-    start = time.perf_counter()
+    start = time.thread_time()  # CPU time, as for every in-process measurement
     importlib.import_module(module_name)
-    print(json.dumps({"seconds": time.perf_counter() - start}))
+    print(json.dumps({"seconds": time.thread_time() - start}))
 
 
 if __name__ == "__main__":

@@ -5,6 +5,7 @@ from __future__ import annotations
 import gc
 import json
 import os
+import resource
 import statistics
 import subprocess
 import sys
@@ -47,15 +48,17 @@ def time_calls(
     repeats: int,
     number: int = 1,
     clock: Callable[[], float] = CPU_CLOCK,
+    collect: bool = True,
 ) -> tuple[float, ...]:
     """Seconds per call: ``repeats`` samples, each the mean of ``number`` calls.
 
-    Garbage from earlier samples is collected first; the cyclic collector
-    stays on while timing, as it is in a real node.
+    With ``collect``, garbage from earlier samples is collected first; the
+    cyclic collector stays on while timing, as it is in a real node.
     """
     samples = []
     for _ in range(repeats):
-        gc.collect()
+        if collect:
+            gc.collect()
         start = clock()
         for _ in range(number):
             call()
@@ -72,18 +75,27 @@ def child_environment(**extra: str) -> dict[str, str]:
     return env
 
 
-def time_process(arguments: Sequence[str], env: dict[str, str] | None = None) -> float:
-    """Wall-clock seconds of a whole process, from spawn to exit; it must succeed."""
+def time_process(
+    arguments: Sequence[str], env: dict[str, str] | None = None
+) -> tuple[float, float]:
+    """Seconds of a whole process, from spawn to exit: (CPU time, wall-clock). It must succeed.
+
+    CPU time (user + system) is what the process costs whatever else runs on
+    the machine; wall-clock is what a user waits, and grows with that load.
+    """
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
     completed = subprocess.run(
         arguments, env=env or child_environment(), capture_output=True, text=True, check=False
     )
-    elapsed = time.perf_counter() - start
+    wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if completed.returncode != 0:
         raise RuntimeError(
             f"{' '.join(arguments)} exited with {completed.returncode}:\n{completed.stderr}"
         )
-    return elapsed
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return cpu, wall
 
 
 def run_probe(module: str, arguments: Sequence[str], env: dict[str, str] | None = None) -> Any:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from bench.build_scenarios import write_bytecode
 from bench.measure import Result, run_probe
 from bench.workspace import Prepared
 
@@ -18,6 +19,8 @@ def memory(prepared: Prepared, repeats: int) -> list[Result]:
         (schema.module_name, schema.class_name, RSS_GENPARAMS, TRACED_GENPARAMS),
         (schema.plain_module_name, "-", RSS_PLAIN, TRACED_PLAIN),
     )
+    # Without a .pyc, compiling the module would dominate (over 100 MiB at 10,000 parameters).
+    write_bytecode(prepared.module_path.parent, schema.module_name, schema.plain_module_name)
     samples: dict[str, list[float]] = {}
     for _ in range(repeats):
         for module, class_name, rss_label, traced_label in sides:

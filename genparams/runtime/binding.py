@@ -147,14 +147,18 @@ class Binding(Generic[P]):
     def commit(self, updates: dict[CompiledParam, Any]) -> None:
         with self.lock:
             before = self.current
+            # Change records are built only for subscribers: a set is on the hot path.
+            subscribed = bool(self.subscribers)
             changed = []
             paths = {}
             for param, value in updates.items():
-                old = get_path(before, param.attribute_path)
+                path = param.attribute_path
+                old = get_path(before, path)
                 if old != value:
-                    changed.append(Change(param.name, old, value))
-                    paths[param.attribute_path] = value
-            if not changed:
+                    paths[path] = value
+                    if subscribed:
+                        changed.append(Change(param.name, old, value))
+            if not paths:
                 return
             after = replace_values(before, paths, extra=("_binding",))
             self.publish(before, after, changed, {path[0] for path in paths})
@@ -165,6 +169,8 @@ class Binding(Generic[P]):
             self.current = after
             for head in heads:
                 object.__setattr__(self.live, head, getattr(after, head))
+            if not self.subscribers:
+                return
         self.notify(Changes(before, after, tuple(changed)))
 
     def notify(self, changes: Changes[P]) -> None:
