@@ -327,8 +327,8 @@ def markdown(results: Sequence[Result], machine: dict[str, str], command: str) -
         "repeats; ratios are genparams ÷ plain from the same run, and targets are judged on "
         "minimums, the least disturbed by other work on the machine. In-process times are "
         "CPU time of the measuring thread (`time.thread_time`), which other processes on a "
-        "shared machine barely inflate; service round trips and whole processes are "
-        "wall-clock time. Samples of the two sides alternate. The raw numbers are in "
+        "shared machine barely inflate; service round trips are wall-clock time, and whole "
+        "processes are shown both ways. Samples of the two sides alternate. The raw numbers are in "
         "[benchmarks.csv](benchmarks.csv).\n\n"
     )
     out.write(
