@@ -96,22 +96,23 @@ def interleaved(
     clock: Callable[[], float] = CPU_CLOCK,
 ) -> dict[str, tuple[float, ...]]:
     samples: dict[str, list[float]] = {label: [] for label in calls}
-    for _ in range(repeats):
+    labels = list(calls)
+    for round_ in range(repeats):
         gc.collect()  # once per round: a full collection costs ~0.1 s at 10,000 parameters
-        for label, call in calls.items():
-            samples[label].extend(time_calls(call, 1, number, clock, collect=False))
+        # Each side goes first in turn: the first sample after a collection runs colder.
+        shift = round_ % len(labels)
+        for label in labels[shift:] + labels[:shift]:
+            samples[label].extend(time_calls(calls[label], 1, number, clock, collect=False))
     return {label: tuple(values) for label, values in samples.items()}
 
 
 def declare(session: RosSession, prepared: Prepared, repeats: int) -> list[Result]:
     """The first declaration in a process: each sample imports the modules afresh, untimed."""
     samples: dict[str, list[float]] = {GENPARAMS: [], PLAIN: []}
-    for _ in range(repeats):
+    for round_ in range(repeats):
         pair = Pair(prepared)
-        for label, declare_on in (
-            (GENPARAMS, pair.params_cls.declare),
-            (PLAIN, pair.plain.declare),
-        ):
+        sides = [(GENPARAMS, pair.params_cls.declare), (PLAIN, pair.plain.declare)]
+        for label, declare_on in sides if round_ % 2 == 0 else sides[::-1]:  # each goes first
             node = session.node()
             samples[label].extend(time_calls(lambda: declare_on(node), 1))  # noqa: B023
             missing = [p.name for p in pair.schema.parameters if not node.has_parameter(p.name)]

