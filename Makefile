@@ -6,7 +6,7 @@ VENV ?= .venv
 PYTHON := $(VENV)/bin/python
 EXAMPLE := examples/camera_node
 
-.PHONY: venv demo test check lint typecheck golden bench bench-quick clean
+.PHONY: venv demo demo-arm tour test check lint typecheck golden bench bench-quick clean
 
 $(VENV)/.installed: pyproject.toml
 	python3 -m venv $(VENV)
@@ -20,6 +20,14 @@ venv: $(VENV)/.installed
 demo: venv
 	cd $(EXAMPLE) && ../../$(VENV)/bin/genparams generate
 	$(PYTHON) $(EXAMPLE)/demo.py
+
+## Mapped parameters on a real node: add a key at run time, try a bad one (examples/arm).
+demo-arm: venv
+	$(PYTHON) examples/arm/demo.py
+
+## Rules, several classes, threads, remote access, lifecycle nodes (examples/motion); PART=rules picks one.
+tour: venv
+	$(PYTHON) examples/motion/tour.py $(PART)
 
 ## Lint, type-check (package, examples and generated code) and run every test.
 test: venv lint typecheck

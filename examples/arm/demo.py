@@ -1,7 +1,7 @@
 """Mapped parameters and renames on a real node, in one process.
 
-Run from the repository root:
-ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST .venv/bin/python examples/arm/demo.py
+Run from the repository root (make keeps DDS discovery on this machine and picks a
+ROS_DOMAIN_ID): make demo-arm
 """
 
 from __future__ import annotations

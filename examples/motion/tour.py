@@ -1,8 +1,8 @@
 """Rules, several classes on one node, threads, remote access and lifecycle nodes, on real nodes.
 
-Run from the repository root, one part or all of them:
-ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST .venv/bin/python examples/motion/tour.py [PART...]
-PART is rules, several, threads, remote, lifecycle (default: all).
+Run from the repository root, one part or all of them (make keeps DDS discovery on
+this machine and picks a ROS_DOMAIN_ID):
+make tour [PART=rules|several|threads|remote|lifecycle]   (default: all)
 """
 
 from __future__ import annotations
