@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 import os
+from collections.abc import Iterator
 from typing import Any
 
 from genparams import naming
@@ -52,7 +53,9 @@ class _ModelBuilder:
     def __init__(self, document: LoadedDocument) -> None:
         self.document = document
         self.problems: list[SchemaProblem] = []
-        self.class_names: set[str] = set()
+        # Class names already used, and every key of the tree: a group class named like an
+        # attribute would be hidden by it inside the class bodies that mention it.
+        self.class_names: set[str] = set(_keys(document.data.get("parameters")))
         self.leaf_paths: dict[str, Path] = {}  # parameter ROS name -> its document path
         self.mapped: list[tuple[Group, Path]] = []
         self.aliases: list[tuple[str, Path, Parameter]] = []  # (alias, where, its parameter)
@@ -153,6 +156,14 @@ class _ModelBuilder:
                 key_path,
                 f"name {key!r} is reserved by the generated class's API; "
                 "rename it or move it into a namespace",
+                at_key=True,
+            )
+            return False
+        if key in naming.SHADOWING:
+            self.problem(
+                key_path,
+                f"name {key!r} would hide the Python name {key} that the generated classes "
+                "use; rename it",
                 at_key=True,
             )
             return False
@@ -377,6 +388,13 @@ class _ModelBuilder:
                 "range and validators contradict each other: no value satisfies all of them",
                 at_key=True,
             )
+
+
+def _keys(tree: Any) -> Iterator[str]:
+    if isinstance(tree, dict):
+        for key, value in tree.items():
+            yield str(key)
+            yield from _keys(value)
 
 
 def _limits(check: Validator) -> tuple[float, bool, float, bool] | None:
