@@ -16,6 +16,7 @@ from typing import Any
 import yaml
 
 from genparams.errors import Location, SchemaError, SchemaProblem
+from genparams.types import ros_text_problem
 
 Path = tuple[str | int, ...]
 
@@ -90,6 +91,7 @@ def compose_yaml(
             [SchemaProblem(Location(file, 1, 1), "", f"file is larger than {MAX_BYTES} bytes")]
         )
     try:
+        _check_nesting(text, file)
         root = yaml.compose(text, Loader=_SafeLoader)
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
@@ -109,6 +111,32 @@ def compose_yaml(
     document.value_locations[()] = builder.location(root)
     document.data = builder.build(root, ())
     return document, builder.problems
+
+
+def _check_nesting(text: str, file: str) -> None:
+    """Reject deep nesting before composing: libyaml's composer recurses in C and would
+    crash the process on ``[[[[...`` thousands deep. Its parser, used here, does not."""
+    depth = 0
+    for event in yaml.parse(text, Loader=_SafeLoader):
+        if isinstance(event, yaml.CollectionStartEvent):
+            depth += 1
+            if depth > MAX_DEPTH:
+                mark = event.start_mark
+                line, column = (mark.line + 1, mark.column + 1) if mark else (1, 1)
+                raise SchemaError(
+                    [
+                        SchemaProblem(
+                            Location(file, line, column),
+                            "",
+                            f"nested deeper than {MAX_DEPTH} levels",
+                        )
+                    ]
+                )
+        elif isinstance(event, yaml.CollectionEndEvent):
+            depth -= 1
+
+
+_PLAIN_COLLECTION_TAGS = frozenset({"tag:yaml.org,2002:map", "tag:yaml.org,2002:seq"})
 
 
 class _Builder:
@@ -142,6 +170,13 @@ class _Builder:
                     )
                 ]
             )
+        if isinstance(node, yaml.CollectionNode) and node.tag not in _PLAIN_COLLECTION_TAGS:
+            # Scalars with unknown tags fail in the safe constructor; collections are built
+            # here, so their tags (!!set, !!python/object...) are refused here.
+            self.problems.append(
+                SchemaProblem(self.location(node), dotted(path), f"unsupported YAML tag {node.tag}")
+            )
+            return None
         if isinstance(node, yaml.MappingNode):
             return self._mapping(node, path)
         if isinstance(node, yaml.SequenceNode):
@@ -155,12 +190,30 @@ class _Builder:
         if self.scalar is not None and isinstance(node, yaml.ScalarNode):
             return self.scalar(node)
         try:
-            return self.constructor.construct_object(node, deep=True)
+            value = self.constructor.construct_object(node, deep=True)
         except yaml.constructor.ConstructorError as exc:
             self.problems.append(
                 SchemaProblem(self.location(node), dotted(path), f"invalid value: {exc.problem}")
             )
             return None
+        except (ArithmeticError, LookupError, TypeError, ValueError):
+            # The safe constructor trusts explicit tags: `!!int abc`, `!!float ''`.
+            self.problems.append(
+                SchemaProblem(
+                    self.location(node),
+                    dotted(path),
+                    f"invalid value: {repr(node.value)[:60]} cannot be read as {node.tag}",
+                )
+            )
+            return None
+        if isinstance(value, str):
+            self.check_text(value, node, path)
+        return value
+
+    def check_text(self, text: str, node: yaml.Node, path: Path) -> None:
+        problem = ros_text_problem(text)
+        if problem is not None:
+            self.problems.append(SchemaProblem(self.location(node), dotted(path), problem))
 
     def _mapping(self, node: yaml.MappingNode, path: Path) -> dict[str, Any]:
         result: dict[str, Any] = {}
@@ -174,6 +227,7 @@ class _Builder:
                 continue
             key = str(key_node.value)
             child_path = (*path, key)
+            self.check_text(key, key_node, child_path)
             if key in result:
                 first = self.document.key_locations[child_path]
                 self.problems.append(
