@@ -277,7 +277,12 @@ class _ModelBuilder:
                     ok = False
                     continue
             else:
-                value = float(value)
+                try:
+                    value = float(value)
+                except OverflowError:
+                    self.problem((*range_path, key), f"{key} is too large for a double")
+                    ok = False
+                    continue
                 if math.isnan(value) or (key == "step" and math.isinf(value)):
                     self.problem((*range_path, key), f"{key} must be a finite number")
                     ok = False
@@ -291,7 +296,15 @@ class _ModelBuilder:
                 f"min {values['min']!r} is greater than max {values['max']!r}",
             )
             return None
-        return RangeSpec(values["min"], values["max"], values["step"])
+        step = values["step"]
+        if step and not math.isfinite((values["max"] - values["min"]) / step):
+            # ROS computes (value - min) / step, which must stay a finite double.
+            self.problem(
+                (*range_path, "step"),
+                f"step {step!r} needs finite min and max and (max - min) / step below 1e308",
+            )
+            return None
+        return RangeSpec(values["min"], values["max"], step)
 
     def choices(
         self, leaf: dict[str, Any], doc_path: Path, param_type: ParamType
@@ -372,7 +385,9 @@ class _ModelBuilder:
         """Numeric limits that leave no valid value are a schema error, not a runtime surprise."""
         if param_type.is_array or not param_type.is_numeric:
             return
-        low, low_open, high, high_open = -math.inf, False, math.inf, False
+        low: float = INT64_MIN if param_type.scalar_kind == "int" else -math.inf
+        high: float = INT64_MAX if param_type.scalar_kind == "int" else math.inf
+        low_open = high_open = False
         for _key, check in checks:
             bounds = _limits(check)
             if bounds is None:
