@@ -331,6 +331,7 @@ def leaves(draw: st.DrawFn) -> Leaf:
 class SchemaCase:
     name: str
     text: str
+    document: dict[str, Any] = field(default_factory=dict)  # what text says, as data
     values: dict[str, Any] = field(default_factory=dict)  # dotted ROS name -> typed value
     types: dict[str, str] = field(default_factory=dict)
     required: set[str] = field(default_factory=set)
@@ -369,5 +370,6 @@ def schemas(draw: st.DrawFn) -> SchemaCase:
     if draw(st.booleans()):
         document["description"] = draw(texts(80))
     document["parameters"] = draw(namespace(case, (), 0))
+    case.document = document
     case.text = block(document, quote_keys=draw(st.booleans()))
     return case
