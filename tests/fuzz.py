@@ -161,7 +161,7 @@ TARGETS: dict[str, st.SearchStrategy[str]] = {
 }
 
 
-def run_for(strategy: st.SearchStrategy[str], seconds: float, chunk: int = 200) -> int:
+def run_for(strategy: st.SearchStrategy[str], seconds: float, chunk: int = 25) -> int:
     """Run ``check`` over fresh examples until ``seconds`` pass; returns how many ran."""
     deadline = time.monotonic() + seconds
     count = 0
