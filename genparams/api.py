@@ -6,7 +6,7 @@ from pathlib import Path
 
 from genparams.builder import build_schema
 from genparams.errors import Location, SchemaError, SchemaProblem
-from genparams.loader import load_yaml
+from genparams.loader import MAX_BYTES, load_yaml
 from genparams.model import Schema
 from genparams.schema_check import check_document
 
@@ -16,6 +16,14 @@ def load_schema(path: str | Path, text: str | None = None) -> Schema:
     file = str(path)
     if text is None:
         try:
+            if Path(path).stat().st_size > MAX_BYTES:  # refuse before reading it into memory
+                raise SchemaError(
+                    [
+                        SchemaProblem(
+                            Location(file, 1, 1), "", f"file is larger than {MAX_BYTES} bytes"
+                        )
+                    ]
+                )
             text = Path(path).read_text(encoding="utf-8")
         except (OSError, UnicodeDecodeError) as exc:
             raise SchemaError(
