@@ -57,7 +57,7 @@ class RequiredParams(_Params):
     "optional\n\nType: string. Default: 'fallback'."
 
     port: int
-    "port\n\nType: int. Required."
+    "port\n\nType: int. Required. Constraints: within [1, 65535]."
 
     serial: str
     "Serial number.\n\nType: string. Required. Constraints: matches '^[A-Z0-9]{8}$'."

@@ -57,7 +57,7 @@ class TextEscapesParams(_Params):
     'A description with "double quotes".\n\nType: string. Default: \'He said "hello"\'.'
 
     injection: str
-    '"""); import os; os.system(\'touch PWNED\') #\n\nType: string. Default: \'"); import os; os.system("touch PWNED") #\'. Constraints: \'\'\'; raise SystemExit #. Deprecated: "); exit(1); ("'
+    '"""); import os; os.system(\'touch PWNED\') #\n\nType: string. Default: \'"); import os; os.system("touch PWNED") #\'. Constraints: \'\'\'; raise SystemExit #. Deprecated: "); exit(1); (".'
 
     line_separators: str
     "Line\u2028separator and paragraph\u2029separator.\n\nType: string. Default: 'a\\u2028b\\u2029c\\x85d'."

@@ -30,10 +30,10 @@ class RangesGroup(_Group):
     __slots__ = ("fps", "full_int64", "offsets", "weights", "width")
 
     fps: float
-    "ranges.fps\n\nType: double. Unit: Hz. Default: 30.0."
+    "ranges.fps\n\nType: double. Unit: Hz. Default: 30.0. Constraints: within [1.0, 120.0] in steps of 0.5."
 
     full_int64: int
-    "ranges.full_int64\n\nType: int. Default: 0."
+    "ranges.full_int64\n\nType: int. Default: 0. Constraints: within [-9223372036854775808, 9223372036854775807]."
 
     offsets: tuple[int, ...]
     "ranges.offsets\n\nType: int_array. Default: (-1, 0, 1). Constraints: every item within [-10, 10]."
@@ -42,7 +42,7 @@ class RangesGroup(_Group):
     "ranges.weights\n\nType: double_array. Default: (0.0, 0.5, 1.0). Constraints: every item within [0.0, 1.0]."
 
     width: int
-    "ranges.width\n\nType: int. Default: 640."
+    "ranges.width\n\nType: int. Default: 640. Constraints: within [64, 4096] in steps of 64."
 
 
 class CompareGroup(_Group):
@@ -156,7 +156,7 @@ class DescribedGroup(_Group):
     __slots__ = ("tolerance",)
 
     tolerance: float
-    "A parameter with every optional key.\n\nType: double. Unit: m. Default: 0.01. Read-only. Constraints: Keep it below the sensor noise.. Deprecated: Use ranges.fps instead."
+    "A parameter with every optional key.\n\nType: double. Unit: m. Default: 0.01. Read-only. Constraints: within [0.0, 1.0]; Keep it below the sensor noise.. Deprecated: Use ranges.fps instead."
 
 
 class ValidatorsParams(_Params):
