@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from genparams.builder import build_schema
+from genparams.builder import build_schema, model_problems
 from genparams.errors import Location, SchemaError, SchemaProblem
 from genparams.loader import MAX_BYTES, load_yaml
 from genparams.model import Schema
@@ -32,7 +32,7 @@ def load_schema(path: str | Path, text: str | None = None) -> Schema:
     document = load_yaml(text, file)
     problems = check_document(document)
     if problems:
-        raise SchemaError(problems)
+        raise SchemaError([*problems, *model_problems(document, problems)])
     return build_schema(document)
 
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 import os
-from collections.abc import Iterator
+from collections.abc import Collection, Iterable, Iterator
 from typing import Any
 
 from genparams import naming
@@ -40,6 +40,24 @@ def build_schema(document: LoadedDocument) -> Schema:
     return schema
 
 
+def model_problems(document: LoadedDocument, known: Iterable[SchemaProblem]) -> list[SchemaProblem]:
+    """The model's own problems in the parts of a document the schema check passed.
+
+    Lets one run report every problem of a file, not the JSON Schema ones first
+    and the rest after they are fixed. Leaves with a known problem are skipped.
+    """
+    data = document.data
+    if not (
+        isinstance(data, dict)
+        and isinstance(data.get("name"), str)
+        and isinstance(data.get("parameters"), dict)
+    ):
+        return []
+    builder = _ModelBuilder(document, skip={problem.key for problem in known})
+    builder.schema()
+    return builder.problems
+
+
 def _frozen(value: Any) -> Any:
     """Lists become tuples, so the model is hashable and immutable."""
     if isinstance(value, list):
@@ -50,9 +68,10 @@ def _frozen(value: Any) -> Any:
 
 
 class _ModelBuilder:
-    def __init__(self, document: LoadedDocument) -> None:
+    def __init__(self, document: LoadedDocument, skip: Collection[str] = ()) -> None:
         self.document = document
         self.problems: list[SchemaProblem] = []
+        self.skip = skip  # dotted keys with problems already known
         # Class names already used, and every key of the tree: a group class named like an
         # attribute would be hidden by it inside the class bodies that mention it.
         self.class_names: set[str] = set(_keys(document.data.get("parameters")))
@@ -108,6 +127,8 @@ class _ModelBuilder:
             key_path = (*doc_path, key)
             if not self.check_name(key, key_path, attributes, top_level=not path):
                 continue
+            if self.skipped(key_path, whole_tree=isinstance(value, dict) and "type" in value):
+                continue
             child_path = (*member_path, key)
             child_attribute = naming.attribute_name(key)
             if isinstance(value, dict) and "type" in value:
@@ -115,7 +136,7 @@ class _ModelBuilder:
             elif isinstance(value, dict):
                 child_class = self.group_class_name(child_path)
                 groups.append(self.group(value, key_path, child_path, child_attribute, child_class))
-        if not parameters and not groups:
+        if all(key == FOR_EACH for key in mapping):
             what = "namespace" if path else "schema"
             self.problem(doc_path, f"empty {what}: give it parameters", at_key=True)
         group = Group(
@@ -130,6 +151,13 @@ class _ModelBuilder:
         if mapped_over:
             self.mapped.append((group, doc_path))
         return group
+
+    def skipped(self, path: Path, *, whole_tree: bool) -> bool:
+        """Whether a known problem sits at ``path`` (or, for a leaf, anywhere inside it)."""
+        key = dotted(path)
+        if key in self.skip or f"{key}.{FOR_EACH}" in self.skip:
+            return True
+        return whole_tree and any(k.startswith((f"{key}.", f"{key}[")) for k in self.skip)
 
     def group_class_name(self, path: tuple[str, ...]) -> str:
         words = (naming.pascal_case(part) for part in path if part != naming.ENTRY_KEY)
