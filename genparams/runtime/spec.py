@@ -63,9 +63,13 @@ class EntryKeys:
         )
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class CompiledParam:
-    """A ParamSpec made ready for checking: type row, attribute path, validator objects."""
+    """A ParamSpec made ready for checking: type row, attribute path, validator objects.
+
+    Compared and hashed by identity: commits key dicts by it, and a spec may hold
+    unhashable validator arguments (``length: {max: 12}``).
+    """
 
     spec: ParamSpec
     type: ParamType
