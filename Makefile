@@ -6,7 +6,7 @@ VENV ?= .venv
 PYTHON := $(VENV)/bin/python
 EXAMPLE := examples/camera_node
 
-.PHONY: venv demo test check lint typecheck golden bench clean
+.PHONY: venv demo test check lint typecheck golden bench bench-quick clean
 
 $(VENV)/.installed: pyproject.toml
 	python3 -m venv $(VENV)
@@ -18,7 +18,7 @@ venv: $(VENV)/.installed
 
 ## Generate the example's module and run the demo: a node in its own process, tuned over services.
 demo: venv
-	$(VENV)/bin/genparams generate $(EXAMPLE)/camera_driver.yaml -o $(EXAMPLE)/camera_node/camera_driver_params.py
+	cd $(EXAMPLE) && ../../$(VENV)/bin/genparams generate
 	$(PYTHON) $(EXAMPLE)/demo.py
 
 ## Lint, type-check (package, examples and generated code) and run every test.
@@ -27,15 +27,23 @@ test: venv lint typecheck
 
 lint: venv
 	$(PYTHON) -m ruff check .
-	$(PYTHON) -m ruff format --check genparams tests examples
+	$(PYTHON) -m ruff format --check genparams tests examples bench
 
 typecheck: venv
-	$(PYTHON) -m mypy genparams
+	$(PYTHON) -m mypy genparams bench
 	cd $(EXAMPLE) && ../../$(PYTHON) -m mypy --config-file ../../pyproject.toml camera_node demo.py
 
 ## Rewrite the golden files (generated modules, bad-schema errors, docs, check-params reports) after an intended change of output.
 golden: venv
 	$(PYTHON) -m tests.update_golden
+
+## Benchmarks against hand-written rclpy at 10 to 10,000 parameters: docs/benchmarks.md and .csv.
+bench: venv
+	$(PYTHON) -m bench
+
+## The benchmarks up to 1,000 parameters with three repeats, into build/bench-quick/.
+bench-quick: venv
+	$(PYTHON) -m bench --quick
 
 clean:
 	rm -rf $(VENV) build dist .mypy_cache .ruff_cache .pytest_cache

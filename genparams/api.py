@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import contextlib
+import gc
+from collections.abc import Iterator
 from pathlib import Path
 
 from genparams.builder import build_schema, model_problems
@@ -11,8 +14,31 @@ from genparams.model import Schema
 from genparams.schema_check import check_document
 
 
+@contextlib.contextmanager
+def _cyclic_gc_paused() -> Iterator[None]:
+    """Pause CPython's cycle collector while the pipeline runs.
+
+    Loading, checking and building allocate hundreds of thousands of small,
+    acyclic, long-lived objects; each collection would re-scan all of them,
+    which made generation superlinear (10,000 parameters took 4x longer than
+    10 x 1,000). Reference counting still frees everything as usual.
+    """
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if enabled:
+            gc.enable()
+
+
 def load_schema(path: str | Path, text: str | None = None) -> Schema:
     """Load, check and build one schema. Raises SchemaError listing every problem."""
+    with _cyclic_gc_paused():
+        return _load_schema(path, text)
+
+
+def _load_schema(path: str | Path, text: str | None) -> Schema:
     file = str(path)
     if text is None:
         try:
@@ -40,4 +66,5 @@ def generate(path: str | Path, text: str | None = None) -> str:
     """Generate the Python module for one schema and return its text."""
     from genparams.render import render_module
 
-    return render_module(load_schema(path, text))
+    with _cyclic_gc_paused():
+        return render_module(load_schema(path, text))

@@ -17,6 +17,7 @@ from genparams.errors import SchemaError, SchemaProblem
 from genparams.loader import LoadedDocument, Path, dotted
 from genparams.model import Group, Parameter, RangeSpec, Schema, ValidatorSpec
 from genparams.references import check_aliases, check_maps
+from genparams.rule_builder import build_rules
 from genparams.schema_check import did_you_mean
 from genparams.types import INT64_MAX, INT64_MIN, TYPES, ParamType, ValueTypeError
 from genparams.validators import (
@@ -91,6 +92,8 @@ class _ModelBuilder:
         root = self.group(data["parameters"], ("parameters",), (), "", class_name)
         check_maps(root, self.mapped, self.leaf_paths, self.problem)
         check_aliases(root, self.aliases, self.problem)
+        rules, rule_problems = build_rules(self.document, root.walk_parameters())
+        self.problems.extend(rule_problems)
         return Schema(
             name=name,
             description=data.get("description", ""),
@@ -98,6 +101,7 @@ class _ModelBuilder:
             class_name=class_name,
             module_name=naming.module_name(name),
             root=root,
+            rules=rules,
         )
 
     def group(

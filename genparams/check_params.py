@@ -94,7 +94,9 @@ class _Checker:
         if self.document.problems and not self.document.sections:
             return  # nothing could be read: a list of every required parameter adds only noise
         for node in self.nodes or ("",):
-            self.required(node, [s for s in applied if not node or node_matches(s.node, node)])
+            sections = [s for s in applied if not node or node_matches(s.node, node)]
+            self.required(node, sections)
+            self.rules(node, sections)
 
     def applied_sections(self) -> list[Section]:
         applied: list[Section] = []
@@ -259,6 +261,45 @@ class _Checker:
                         f"<{param.type.name}>)",
                     )
                 )
+
+    def rules(self, node: str, sections: list[Section]) -> None:
+        """Rules over the values the node would start with: its defaults, then this file."""
+        if not self.compiled.rules:
+            return
+        values: dict[str, Any] = {}
+        unusable: set[str] = set()  # given with a wrong value, already reported
+        entries: dict[str, ParamEntry] = {}
+        for name, param in self.compiled.parameters.items():
+            if not param.spec.required:
+                values[name] = param.type.coerce_default(param.spec.default)
+        for section in sections:
+            for entry in section.entries:
+                name = self.compiled.aliases.get(entry.name, entry.name)
+                if name not in self.compiled.parameters:
+                    continue
+                param = self.compiled.parameters[name]
+                entries[name] = entry
+                try:
+                    value = param.type.from_ros(entry.value)
+                except ValueTypeError:
+                    unusable.add(name)
+                    continue
+                if param.check(value) is None:
+                    values[name] = value
+                    unusable.discard(name)
+                else:
+                    unusable.add(name)
+        for rule in self.compiled.rules:
+            if any(n not in values or n in unusable for n in rule.parameters):
+                continue  # a required parameter missing, or a bad value: already reported
+            reason = rule.violation(values)
+            if reason is None:
+                continue
+            given = [entries[n] for n in rule.parameters if n in entries]
+            where = given[0].key_location if given else Location(self.document.file, 1, 1)
+            key = given[0].name if given else ""
+            for_node = f" (for {node})" if node else ""
+            self.problems.append(SchemaProblem(where, key, reason + for_node))
 
 
 def _shown(value: object) -> str:

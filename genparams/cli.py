@@ -7,9 +7,17 @@ import sys
 from collections.abc import Sequence
 
 from genparams import __version__
-from genparams.commands import check_params, defaults, docs, generate, json_schema, validate
+from genparams.commands import (
+    check_params,
+    cmake_dir,
+    defaults,
+    docs,
+    generate,
+    json_schema,
+    validate,
+)
 
-COMMANDS = (generate, validate, docs, defaults, json_schema, check_params)
+COMMANDS = (generate, validate, docs, defaults, json_schema, check_params, cmake_dir)
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -7,6 +7,7 @@ block is the default params file itself (see params_file).
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator
 from dataclasses import dataclass
 
@@ -47,6 +48,13 @@ class NamespaceDoc:
 
 
 @dataclass(frozen=True)
+class RuleDoc:
+    name: str
+    check: str  # the expression as written in the schema, on one line
+    description: str
+
+
+@dataclass(frozen=True)
 class DocsPage:
     title: str
     description: str
@@ -56,6 +64,11 @@ class DocsPage:
     version: str
     namespaces: tuple[NamespaceDoc, ...]
     default_params: ParamsFile
+    rules: tuple[RuleDoc, ...] = ()
+
+    @property
+    def has_rules(self) -> bool:
+        return bool(self.rules)
 
     @property
     def has_required(self) -> bool:
@@ -80,7 +93,13 @@ def docs_page(schema: Schema) -> DocsPage:
             for group in _documented_groups(schema.root)
         ),
         default_params=default_params_file(schema, comments=False),
+        rules=tuple(RuleDoc(r.name, _one_line(r.check), r.description) for r in schema.rules),
     )
+
+
+def _one_line(check: str) -> str:
+    """A check written over several YAML lines, on one line (a line break means a space)."""
+    return re.sub(r"\s*\n\s*", " ", check.strip())
 
 
 def _documented_groups(group: Group) -> Iterator[Group]:

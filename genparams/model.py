@@ -209,6 +209,22 @@ class Group:
 
 
 @dataclass(frozen=True)
+class Rule:
+    """A cross-parameter rule; ``check`` goes to generated code as text, parsed at run time."""
+
+    name: str
+    check: str
+    description: str
+    parameters: tuple[str, ...]  # ROS names the check reads, in order of appearance
+    location: Location  # of the check
+
+    @property
+    def spec_options(self) -> tuple[tuple[str, Any], ...]:
+        """Keyword arguments of the runtime RuleSpec that differ from their defaults."""
+        return (("description", self.description),) if self.description else ()
+
+
+@dataclass(frozen=True)
 class Schema:
     name: str
     description: str
@@ -216,6 +232,7 @@ class Schema:
     class_name: str
     module_name: str
     root: Group
+    rules: tuple[Rule, ...] = ()
 
     @property
     def nested_groups(self) -> tuple[Group, ...]:

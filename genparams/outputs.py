@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import difflib
 import os
+import stat
 import tempfile
 from collections.abc import Mapping
 from pathlib import Path
@@ -16,10 +17,22 @@ def write_all(outputs: Mapping[Path, str]) -> None:
         try:
             with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as handle:
                 handle.write(text)
+            # mkstemp makes the file private (0600); installs copy that mode along.
+            os.chmod(temp, _file_mode(path))
             os.replace(temp, path)
         except BaseException:
             Path(temp).unlink(missing_ok=True)
             raise
+
+
+def _file_mode(path: Path) -> int:
+    """The mode a rewritten file keeps, or what a plain ``open`` would give a new one."""
+    try:
+        return stat.S_IMODE(path.stat().st_mode)
+    except FileNotFoundError:
+        umask = os.umask(0)
+        os.umask(umask)
+        return 0o666 & ~umask
 
 
 def stale_diffs(outputs: Mapping[Path, str]) -> list[str]:

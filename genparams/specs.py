@@ -13,6 +13,7 @@ from genparams.runtime.spec import (
     CompiledParam,
     CompiledSchema,
     ParamSpec,
+    RuleSpec,
     SchemaSpec,
     compile_param,
     compile_schema,
@@ -30,12 +31,13 @@ def compiled_param(parameter: Parameter) -> CompiledParam:
 
 def compiled_schema(schema: Schema) -> CompiledSchema:
     """What the runtime compiles from a generated module's spec: fixed parameters, the
-    templates of mapped groups (with their maps) and old names. No classes: no values."""
+    templates of mapped groups (with their maps), old names and rules. No classes: no values."""
     spec = SchemaSpec(
         schema.name,
         tuple(param_spec(p) for p in schema.parameters),
         groups={},
         maps=dict(schema.maps),
+        rules=tuple(RuleSpec(r.name, r.check, **dict(r.spec_options)) for r in schema.rules),
     )
     return compile_schema(spec)
 

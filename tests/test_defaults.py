@@ -21,6 +21,7 @@ REQUIRED = {
     "example": {"serial": "ABCD1234"},
     "tricky": {"legacy.token": "abc"},
     "mapped": {"robot_id": "arm1"},
+    "rules": {"serial": "S1"},
 }
 
 

@@ -27,6 +27,17 @@ def call(node: Node, future: Future) -> object:
     return future.result()
 
 
+def wait_until_answering(node: Node, client: AsyncParameterClient) -> bool:
+    """Services can be discovered before their replies reach us: ask until one arrives."""
+    for _ in range(10):
+        future = client.get_parameters(["camera.fps"])
+        rclpy.spin_until_future_complete(node, future, timeout_sec=3.0)
+        if future.done():
+            return True
+        future.cancel()
+    return False
+
+
 def main() -> int:
     env = dict(os.environ, PYTHONPATH=f"{HERE}{os.pathsep}{os.environ.get('PYTHONPATH', '')}")
     print("$ python -m camera_node.node --ros-args -p serial:=CAM00042 -p camera.fps:=60.0")
@@ -47,7 +58,9 @@ def main() -> int:
     client_node = Node("demo_client")
     try:
         client = AsyncParameterClient(client_node, TARGET)
-        if not client.wait_for_services(timeout_sec=15.0):
+        if not client.wait_for_services(timeout_sec=15.0) or not wait_until_answering(
+            client_node, client
+        ):
             print("camera node did not come up", file=sys.stderr)
             return 1
         names = ["camera.fps", "camera.encoding", "serial"]

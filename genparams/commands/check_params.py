@@ -1,4 +1,4 @@
-"""genparams check-params SCHEMA PARAMS.yaml [--node /ns/name]..."""
+"""genparams check-params SCHEMA PARAMS.yaml... [--node /ns/name]..."""
 
 from __future__ import annotations
 
@@ -15,10 +15,11 @@ from genparams.ros_yaml import absolute, node_name_problem
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     parser = subparsers.add_parser(
         "check-params",
-        help="check a params file against a schema; exit 1 listing every problem",
+        help="check params files against a schema; exit 1 listing every problem",
     )
     parser.add_argument("schema", metavar="SCHEMA", type=Path)
-    parser.add_argument("params", metavar="PARAMS.yaml", type=Path)
+    # Several files at once: pre-commit passes every matching file in one call.
+    parser.add_argument("params", nargs="+", metavar="PARAMS.yaml", type=Path)
     parser.add_argument(
         "--node",
         action="append",
@@ -38,13 +39,18 @@ def run(args: argparse.Namespace) -> int:
     schema = schema_or_none(args.schema)
     if schema is None:
         return 2
-    try:
-        text = args.params.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        print(f"genparams check-params: cannot read {args.params}: {exc}", file=sys.stderr)
-        return 2
-    document = read_params_file(text, str(args.params))
-    report = check_params(schema, document, [absolute(n) for n in args.node])
-    for line in (*report.problems, *report.warnings):
-        print(line)
-    return 1 if report.problems else 0
+    code = 0
+    for params in args.params:
+        try:
+            text = params.read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError) as exc:
+            print(f"genparams check-params: cannot read {params}: {exc}", file=sys.stderr)
+            code = 2
+            continue
+        document = read_params_file(text, str(params))
+        report = check_params(schema, document, [absolute(n) for n in args.node])
+        for line in (*report.problems, *report.warnings):
+            print(line)
+        if report.problems:
+            code = max(code, 1)
+    return code

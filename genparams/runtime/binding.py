@@ -20,6 +20,7 @@ from rclpy.parameter import Parameter
 from genparams.naming import is_ros_token, join_prefix
 from genparams.runtime.aliases import Aliases, old_names_by_current
 from genparams.runtime.changes import Change, Changes
+from genparams.runtime.consistency import parameter_set_lock
 from genparams.runtime.declaring import declare_batch, descriptor_for, ros_parameter
 from genparams.runtime.deprecation import DeprecationWatch, Notices, report_overrides
 from genparams.runtime.entries import resolve_all
@@ -27,6 +28,7 @@ from genparams.runtime.errors import ParameterDeclarationError
 from genparams.runtime.mapped import MappedEntries
 from genparams.runtime.overrides import OverrideReader
 from genparams.runtime.params import Params
+from genparams.runtime.rule_check import broken_rules
 from genparams.runtime.spec import CompiledParam, compile_schema
 from genparams.runtime.tree import build_tree, copy_node, get_path, replace_values
 
@@ -59,6 +61,11 @@ class Binding(Generic[P]):
 
     @classmethod
     def declare(cls, params_cls: type[P], node: Node, prefix: str = "") -> Binding[P]:
+        with parameter_set_lock(node):  # no set may run between declaring and validating
+            return cls._declare(params_cls, node, prefix)
+
+    @classmethod
+    def _declare(cls, params_cls: type[P], node: Node, prefix: str) -> Binding[P]:
         prefix = check_prefix(prefix)
         spec = params_cls._SPEC
         compiled = compile_schema(spec)
@@ -100,6 +107,7 @@ class Binding(Generic[P]):
 
     def on_set(self, parameters: Sequence[Parameter]) -> SetParametersResult:
         reasons = []
+        proposed: dict[str, Any] = {}
         for parameter in parameters:
             param = self.owned.get(parameter.name)
             if param is None:
@@ -115,9 +123,15 @@ class Binding(Generic[P]):
             reason = param.check(value)
             if reason is not None:
                 reasons.append(f"{parameter.name}: {reason}")
+            proposed[param.name] = value
+        if not reasons and proposed:
+            reasons = broken_rules(self.current, proposed, self.full_name)
         if reasons:
             return SetParametersResult(successful=False, reason="; ".join(reasons))
         return _ACCEPTED
+
+    def full_name(self, name: str) -> str:
+        return join_prefix(self.prefix, name)
 
     def on_post_set(self, parameters: Sequence[Parameter]) -> None:
         updates = {}
@@ -133,14 +147,18 @@ class Binding(Generic[P]):
     def commit(self, updates: dict[CompiledParam, Any]) -> None:
         with self.lock:
             before = self.current
+            # Change records are built only for subscribers: a set is on the hot path.
+            subscribed = bool(self.subscribers)
             changed = []
             paths = {}
             for param, value in updates.items():
-                old = get_path(before, param.attribute_path)
+                path = param.attribute_path
+                old = get_path(before, path)
                 if old != value:
-                    changed.append(Change(param.name, old, value))
-                    paths[param.attribute_path] = value
-            if not changed:
+                    paths[path] = value
+                    if subscribed:
+                        changed.append(Change(param.name, old, value))
+            if not paths:
                 return
             after = replace_values(before, paths, extra=("_binding",))
             self.publish(before, after, changed, {path[0] for path in paths})
@@ -151,6 +169,8 @@ class Binding(Generic[P]):
             self.current = after
             for head in heads:
                 object.__setattr__(self.live, head, getattr(after, head))
+            if not self.subscribers:
+                return
         self.notify(Changes(before, after, tuple(changed)))
 
     def notify(self, changes: Changes[P]) -> None:

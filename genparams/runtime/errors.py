@@ -19,3 +19,17 @@ class ParameterDeclarationError(Exception):
 
 class DetachedSnapshotError(RuntimeError):
     """A snapshot or ``defaults()`` value was asked to do something only a declared view can."""
+
+
+class RemoteParameterError(RuntimeError):
+    """Another node's parameters could not be read as the schema says they are."""
+
+
+class RemoteSetError(RemoteParameterError):
+    """A remote set was refused: by the schema before sending (``sent`` False), or by the node."""
+
+    def __init__(self, reason: str, *, sent: bool) -> None:
+        self.reason = reason
+        self.sent = sent
+        where = "rejected by the node" if sent else "rejected before sending"
+        super().__init__(f"{where}: {reason}")

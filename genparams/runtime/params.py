@@ -15,6 +15,7 @@ if TYPE_CHECKING:
     from rclpy.node import Node
 
     from genparams.runtime.binding import Binding
+    from genparams.runtime.remote import RemoteParams
 
 
 class Params(Group):
@@ -34,6 +35,18 @@ class Params(Group):
         from genparams.runtime.binding import Binding
 
         return Binding.declare(cls, node, prefix).live
+
+    @classmethod
+    def remote(cls, node: Node, target: str, prefix: str = "") -> RemoteParams[Self]:
+        """A typed async client for ``target`` (e.g. "/ns/node"), which declares this class.
+
+        ``node`` makes the service calls and must be spun by an executor.
+        ``get()``, ``set({...})`` and ``watch(callback)`` return rclpy Futures or a
+        handle; ``set`` checks the values against the schema before sending.
+        """
+        from genparams.runtime.remote import RemoteParams
+
+        return RemoteParams(cls, node, target, prefix)
 
     @classmethod
     def defaults(cls, overrides: Mapping[str, Any] | None = None) -> Self:

@@ -18,6 +18,9 @@ def resolve_values(
 ) -> tuple[dict[str, Any], list[str]]:
     """Typed values for every parameter, and every problem found (all of them, not the first).
 
+    Cross-parameter rules are checked on the result, so a set of overrides that
+    breaks one is reported with the other problems.
+
     ``given`` maps relative names to values in ROS form (as rclpy holds them);
     they are typed as strictly as ROS types them. ``parameters`` defaults to
     the fixed parameters of ``compiled``.
@@ -48,4 +51,10 @@ def resolve_values(
             problems.append(f"{shown}: {origin} rejected: {reason}")
             continue
         values[name] = value
+    # Rules whose parameters all resolved; the others' problems are already listed.
+    for rule in compiled.rules:
+        if all(name in values for name in rule.parameters):
+            reason = rule.violation(values, full_name)
+            if reason is not None:
+                problems.append(reason)
     return values, problems

@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 from genparams.naming import ENTRY_KEY, attribute_name, entry_key_problem
+from genparams.rules import CompiledRule, RuleError, compile_rule, rules_by_parameter
 from genparams.types import TYPES, ParamType
 from genparams.validators import OneOf, RosRange, SubsetOf, Validator, build_validator
 
@@ -32,6 +33,15 @@ class ParamSpec:
 
 
 @dataclass(frozen=True)
+class RuleSpec:
+    """A cross-parameter rule: ``check`` is an expression of genparams.rules, kept as text."""
+
+    name: str
+    check: str
+    description: str = ""
+
+
+@dataclass(frozen=True)
 class SchemaSpec:
     """A generated class's parameters.
 
@@ -43,6 +53,7 @@ class SchemaSpec:
     parameters: tuple[ParamSpec, ...]
     groups: Mapping[str, type[Group]]  # dotted namespace -> generated class ("gains.*": entry)
     maps: Mapping[str, str] = field(default_factory=dict)  # "gains" -> its for_each parameter
+    rules: tuple[RuleSpec, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -67,8 +78,9 @@ class EntryKeys:
 class CompiledParam:
     """A ParamSpec made ready for checking: type row, attribute path, validator objects.
 
-    Compared and hashed by identity: commits key dicts by it, and a spec may hold
-    unhashable validator arguments (``length: {max: 12}``).
+    Compared and hashed by identity (one per parameter, cached with its schema):
+    it keys the updates of every set, where hashing all its fields cost ~1 us.
+    Identity also lets a spec hold unhashable validator arguments (``length: {max: 12}``).
     """
 
     spec: ParamSpec
@@ -140,10 +152,31 @@ class CompiledSchema:
     parameters: Mapping[str, CompiledParam]  # fixed parameters, by relative ROS name
     templates: Mapping[str, CompiledParam] = field(default_factory=dict)  # "gains.*.p"
     aliases: Mapping[str, str] = field(default_factory=dict)  # old name -> current name
+    rules: tuple[CompiledRule, ...] = ()
+    rules_by_parameter: Mapping[str, tuple[CompiledRule, ...]] = field(default_factory=dict)
 
     @property
     def maps(self) -> Mapping[str, str]:
         return self.spec.maps
+
+    def rules_reading(self, names: Iterable[str]) -> tuple[CompiledRule, ...]:
+        """The rules that read any of ``names``: only these can break when they change."""
+        found: dict[str, CompiledRule] = {}
+        for name in names:
+            for rule in self.rules_by_parameter.get(name, ()):
+                found[rule.name] = rule
+        return tuple(found.values())
+
+
+def compile_rules(spec: SchemaSpec) -> tuple[CompiledRule, ...]:
+    types = {p.name: p.type for p in spec.parameters if ENTRY_KEY not in p.name.split(".")}
+    compiled = []
+    for rule in spec.rules:
+        try:
+            compiled.append(compile_rule(rule.name, rule.check, rule.description, types))
+        except RuleError as exc:  # generated code was checked; a hand-written spec may not be
+            raise ValueError(f"{spec.name}: rule {rule.name!r}: {exc}") from None
+    return tuple(compiled)
 
 
 _COMPILED: dict[int, CompiledSchema] = {}
@@ -172,4 +205,5 @@ def _compile(spec: SchemaSpec) -> CompiledSchema:
         is_template = ENTRY_KEY in param_spec.name.split(".")
         (templates if is_template else parameters)[param_spec.name] = compiled
         aliases.update(dict.fromkeys(param_spec.aliases, param_spec.name))
-    return CompiledSchema(spec, parameters, templates, aliases)
+    rules = compile_rules(spec)
+    return CompiledSchema(spec, parameters, templates, aliases, rules, rules_by_parameter(rules))

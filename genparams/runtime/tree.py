@@ -7,7 +7,7 @@ shared mutable state) and one set costs O(depth x group width), not O(N).
 
 from __future__ import annotations
 
-from collections.abc import Collection, Iterable, Iterator, Mapping
+from collections.abc import Callable, Collection, Iterable, Iterator, Mapping
 from typing import Any, TypeVar
 
 from genparams.naming import ENTRY_KEY, attribute_name
@@ -132,17 +132,48 @@ def build_tree(
     return root  # type: ignore[return-value]
 
 
+_Copier = tuple[tuple[Callable[[Any], Any], Callable[[Any, Any], None]], ...]
+_COPIERS: dict[type[Group] | tuple[type[Group], tuple[str, ...]], _Copier] = {}
+
+
+def _copier(cls: type[Group], extra: tuple[str, ...]) -> _Copier:
+    """The (read, write) functions of every slot: its descriptor's, not lookups by name.
+
+    Copying groups is most of the cost of a set. Going through the slot
+    descriptors skips the attribute lookups by name on the class; in a node's
+    set path (caches cold from rclpy's own work) that measured 5-8 us faster
+    per set than ``getattr`` / ``object.__setattr__`` or ``attrgetter``.
+    """
+    slots = tuple(_slot(cls, name) for name in (*field_names(cls), *extra))
+    copier = tuple((slot.__get__, slot.__set__) for slot in slots)
+    _COPIERS[(cls, extra) if extra else cls] = copier
+    return copier
+
+
+def _slot(cls: type[Group], name: str) -> Any:
+    for klass in cls.__mro__:
+        if name in klass.__dict__:
+            return klass.__dict__[name]
+    raise AttributeError(f"{cls.__name__} has no slot {name!r}")
+
+
 def copy_node(node: G, extra: Iterable[str] = ()) -> G:
     if isinstance(node, GroupMap):
         return GroupMap(node._entries)
-    new = object.__new__(type(node))
-    for name in (*field_names(type(node)), *extra):
-        object.__setattr__(new, name, getattr(node, name))
+    cls = type(node)
+    extra = tuple(extra)
+    copier = _COPIERS.get((cls, extra) if extra else cls) or _copier(cls, extra)
+    new = object.__new__(cls)
+    for read, write in copier:
+        write(new, read(node))
     return new
 
 
 def replace_values(root: G, updates: Mapping[tuple[str, ...], Any], extra: Iterable[str] = ()) -> G:
     """A new root with the leaves at the attribute paths replaced, sharing everything else."""
+    if len(updates) == 1:  # the common case of one set: no grouping by head
+        ((path, value),) = updates.items()
+        return _replace_one(root, path, value, tuple(extra))
     by_head: dict[str, dict[tuple[str, ...], Any]] = {}
     leaves: dict[str, Any] = {}
     for path, value in updates.items():
@@ -164,6 +195,20 @@ def replace_values(root: G, updates: Mapping[tuple[str, ...], Any], extra: Itera
 
 def _child(node: Any, name: str) -> Any:
     return node[name] if isinstance(node, GroupMap) else getattr(node, name)
+
+
+def _replace_one(root: G, path: tuple[str, ...], value: Any, extra: tuple[str, ...]) -> G:
+    chain: list[Any] = [root]
+    for name in path[:-1]:
+        chain.append(_child(chain[-1], name))
+    for depth in range(len(path) - 1, -1, -1):
+        new = copy_node(chain[depth], extra if depth == 0 else ())
+        if isinstance(new, GroupMap):
+            new._entries[path[depth]] = value  # the copy is not shared yet
+        else:
+            object.__setattr__(new, path[depth], value)
+        value = new
+    return value  # type: ignore[no-any-return]
 
 
 def get_path(root: Group, path: tuple[str, ...]) -> Any:

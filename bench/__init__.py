@@ -1,0 +1,1 @@
+"""Benchmarks of genparams against hand-written rclpy: ``make bench`` writes docs/benchmarks.md."""

@@ -1,0 +1,1 @@
+"""Range filter for a lidar scan."""

@@ -1,0 +1,3 @@
+from genparams.cmake import cmake_dir
+
+print(cmake_dir())

@@ -1,0 +1,61 @@
+"""Build the model of a schema's ``rules:`` and check them: names, expressions, defaults.
+
+A check may read only parameters the schema declares, must be an expression of
+genparams.rules, and the defaults must satisfy it (when every parameter it reads
+has a default). Problems point at the rule's ``check`` value.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from typing import Any
+
+from genparams.errors import SchemaProblem
+from genparams.loader import LoadedDocument, Path, dotted
+from genparams.model import Parameter, Rule
+from genparams.naming import ENTRY_KEY
+from genparams.rules import RuleError, compile_rule
+
+
+def build_rules(
+    document: LoadedDocument, parameters: Iterable[Parameter]
+) -> tuple[tuple[Rule, ...], list[SchemaProblem]]:
+    # Entries of mapped groups come and go at run time: rules read fixed parameters only.
+    by_name = {p.ros_name: p for p in parameters if ENTRY_KEY not in p.ros_name.split(".")}
+    types = {name: p.type.name for name, p in by_name.items()}
+    rules: list[Rule] = []
+    problems: list[SchemaProblem] = []
+
+    def problem(path: Path, message: str) -> None:
+        problems.append(SchemaProblem(document.value_location(path), dotted(path), message))
+
+    seen: dict[str, int] = {}
+    entries: list[dict[str, Any]] = document.data.get("rules", [])
+    for index, entry in enumerate(entries):
+        path: Path = ("rules", index)
+        name, check = entry["name"], entry["check"]
+        description = entry.get("description", "")
+        if name in seen:
+            problem((*path, "name"), f"rule name {name!r} is already used by rules[{seen[name]}]")
+        seen.setdefault(name, index)
+        try:
+            compiled = compile_rule(name, check, description, types)
+        except RuleError as exc:
+            problem((*path, "check"), str(exc))
+            continue
+        defaults = {n: by_name[n].default for n in compiled.parameters}
+        # A required parameter has no default, and a bad default is already reported.
+        if not any(by_name[n].required or defaults[n] is None for n in compiled.parameters):
+            failure = compiled.failure(defaults)
+            if failure is not None:
+                problem((*path, "check"), f"the defaults break rule {name!r}: {failure}")
+        rules.append(
+            Rule(
+                name=name,
+                check=check,
+                description=description,
+                parameters=compiled.parameters,
+                location=document.value_location((*path, "check")),
+            )
+        )
+    return tuple(rules), problems

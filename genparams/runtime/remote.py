@@ -1,0 +1,260 @@
+"""Typed access to the parameters of another node that follows the same schema.
+
+Built on rclpy's AsyncParameterClient (the parameter services) and the
+``/parameter_events`` topic. Every call returns an rclpy Future, so it can be
+awaited in a coroutine run by an executor, or waited on with
+``executor.spin_until_future_complete``. Results are typed snapshots, the same
+frozen values ``snapshot()`` returns on the node itself.
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Callable, Generator, Mapping
+from typing import TYPE_CHECKING, Any, Generic, TypeVar, cast
+
+from rclpy.node import Node
+from rclpy.parameter import Parameter, parameter_value_to_python
+from rclpy.parameter_client import AsyncParameterClient
+from rclpy.task import Future
+
+from genparams.naming import ENTRY_KEY, is_ros_token, join_prefix
+from genparams.runtime.binding import check_prefix
+from genparams.runtime.changes import Changes
+from genparams.runtime.entries import expand, instantiate
+from genparams.runtime.errors import RemoteParameterError, RemoteSetError
+from genparams.runtime.params import Params
+from genparams.runtime.spec import CompiledParam, compile_schema
+from genparams.runtime.tree import build_tree
+from genparams.types import ValueTypeError
+
+if TYPE_CHECKING:
+    from genparams.runtime.remote_watch import RemoteWatch
+
+P = TypeVar("P", bound=Params)
+T = TypeVar("T")
+
+
+class TypedFuture(Future, Generic[T]):
+    """An rclpy Future that says what it resolves to."""
+
+    def result(self) -> T | None:
+        """The result once done (None before); raises the failure if there was one."""
+        return cast("T | None", super().result())
+
+    def __await__(self) -> Generator[None, None, T]:
+        result = yield from super().__await__()
+        return cast(T, result)
+
+
+def _fully_qualified(node: Node, target: str) -> str:
+    if target.startswith("/"):
+        return target
+    namespace = node.get_namespace().rstrip("/")
+    return f"{namespace}/{target}"
+
+
+class RemoteParams(Generic[P]):
+    """A typed client for the parameters of ``target``, declared there from the same schema.
+
+    ``set`` checks values with the schema's validators and rules before anything is
+    sent; the remote node checks them again (it runs the same schema), so rules
+    that also read values not being set are left to it.
+    """
+
+    def __init__(self, params_cls: type[P], node: Node, target: str, prefix: str = "") -> None:
+        self.params_cls = params_cls
+        self.node = node
+        self.prefix = check_prefix(prefix)
+        self.target = _fully_qualified(node, target)
+        self.compiled = compile_schema(params_cls._SPEC)
+        self.client = AsyncParameterClient(node, self.target)
+
+    def __repr__(self) -> str:
+        prefix = f", prefix={self.prefix!r}" if self.prefix else ""
+        return f"{self.params_cls.__name__}.remote({self.target!r}{prefix})"
+
+    def full_name(self, name: str) -> str:
+        return join_prefix(self.prefix, name)
+
+    def relative_name(self, full_name: str) -> str | None:
+        if not self.prefix:
+            return full_name
+        head = self.prefix + "."
+        return full_name[len(head) :] if full_name.startswith(head) else None
+
+    def wait_for_services(self, timeout_sec: float | None = None) -> bool:
+        """Block until the target's parameter services answer; False after ``timeout_sec``."""
+        return bool(self.client.wait_for_services(timeout_sec=timeout_sec))
+
+    def get(self) -> TypedFuture[P]:
+        """Every parameter of the schema as a frozen snapshot: the fixed ones in one request,
+        then (for mapped groups) the entries their key lists name, in a second."""
+        result: TypedFuture[P] = TypedFuture()
+
+        def fixed_read(values: dict[str, Any]) -> None:
+            entries = expand(self.compiled, values) if self.compiled.templates else {}
+            if not entries:
+                result.set_result(self.snapshot(values))
+                return
+            self.read(
+                entries, lambda more: result.set_result(self.snapshot({**values, **more})), result
+            )
+
+        self.read(self.compiled.parameters, fixed_read, result)
+        return result
+
+    def read(
+        self,
+        parameters: Mapping[str, CompiledParam],
+        then: Callable[[dict[str, Any]], None],
+        result: Future,
+    ) -> None:
+        """Read ``parameters``, hand their typed values to ``then``; failures go to ``result``."""
+        names = list(parameters)
+        full_names = [self.full_name(name) for name in names]
+
+        def answered(response_future: Future) -> None:
+            try:
+                messages = response_future.result().values
+                if len(messages) != len(names):
+                    # The service answers nothing at all when one name is not declared.
+                    self.client.list_parameters([], 0, report_missing)
+                    return
+                values: dict[str, Any] = {}
+                problems: list[str] = []
+                for name, full, message in zip(names, full_names, messages, strict=True):
+                    try:
+                        python = parameter_value_to_python(message)
+                        values[name] = parameters[name].type.from_ros(python)
+                    except ValueTypeError as exc:
+                        problems.append(f"{full}: {exc}")
+                if problems:
+                    raise self.not_following(problems)
+                then(values)
+            except Exception as exc:  # handed to whoever waits on the future
+                result.set_exception(exc)
+
+        def report_missing(response_future: Future) -> None:
+            try:
+                declared = set(response_future.result().result.names)
+                missing = [f"{full}: not declared" for full in full_names if full not in declared]
+                result.set_exception(self.not_following(missing))
+            except Exception as exc:
+                result.set_exception(exc)
+
+        self.client.get_parameters(full_names, answered)
+
+    def not_following(self, problems: list[str]) -> RemoteParameterError:
+        return RemoteParameterError(
+            f"{self.target} does not follow {self.compiled.spec.name}: " + "; ".join(problems)
+        )
+
+    def snapshot(self, values: Mapping[str, Any]) -> P:
+        spec = self.compiled.spec
+        return build_tree(
+            self.params_cls, spec.groups, values, extra={"_binding": None}, maps=spec.maps
+        )
+
+    def parameter(self, name: str) -> CompiledParam | None:
+        """The fixed parameter ``name``, or the mapped entry it names (``gains.elbow.p``)."""
+        param = self.compiled.parameters.get(name)
+        if param is not None:
+            return param
+        parts = name.split(".")
+        for template in self.compiled.templates.values():
+            pattern = template.name.split(".")
+            if len(pattern) == len(parts) and all(
+                t in (p, ENTRY_KEY) for p, t in zip(parts, pattern, strict=True)
+            ):
+                keys = [p for p, t in zip(parts, pattern, strict=True) if t == ENTRY_KEY]
+                if all(is_ros_token(key) for key in keys):
+                    return instantiate(template, keys)
+        return None
+
+    def set(self, values: Mapping[str, Any]) -> TypedFuture[None]:
+        """Set ``values`` (relative ROS names -> values) atomically: all of them or none.
+
+        A value the schema rejects fails the future at once, with nothing sent
+        (``RemoteSetError.sent`` is False). A rejection by the node fails it with
+        the node's reason. Doubles may be given as ints, arrays as lists.
+        """
+        result: TypedFuture[None] = TypedFuture()
+        typed, reasons = self.check(values)
+        if reasons:
+            result.set_exception(RemoteSetError("; ".join(reasons), sent=False))
+            return result
+        parameters = []
+        for param, value in typed.values():
+            parameters.append(
+                Parameter(
+                    self.full_name(param.name),
+                    Parameter.Type(param.type.ros_type),
+                    param.type.to_ros(value),
+                )
+            )
+
+        def answered(response_future: Future) -> None:
+            try:
+                outcome = response_future.result().result
+            except Exception as exc:
+                result.set_exception(exc)
+                return
+            if outcome.successful:
+                result.set_result(None)
+            else:
+                result.set_exception(RemoteSetError(outcome.reason, sent=True))
+
+        self.client.set_parameters_atomically(parameters, answered)
+        return result
+
+    def check(
+        self, values: Mapping[str, Any]
+    ) -> tuple[dict[str, tuple[CompiledParam, Any]], list[str]]:
+        """Typed values and the reasons the schema rejects them, worded as the node words them."""
+        typed: dict[str, tuple[CompiledParam, Any]] = {}
+        reasons: list[str] = []
+        for name, value in values.items():
+            param = self.parameter(name)
+            if param is None:
+                known = sorted([*self.compiled.parameters, *self.compiled.templates])
+                close = difflib.get_close_matches(name, known, n=1)
+                hint = f" (did you mean {close[0]!r}?)" if close else ""
+                reasons.append(f"{name}: no such parameter in {self.compiled.spec.name}{hint}")
+                continue
+            reason = _check_one(param, value)
+            if isinstance(reason, str):
+                reasons.append(f"{self.full_name(name)}: {reason}")
+            else:
+                typed[name] = (param, reason[0])
+        if reasons:
+            return typed, reasons
+        proposed = {name: value for name, (_, value) in typed.items()}
+        for rule in self.compiled.rules:
+            if all(name in proposed for name in rule.parameters):
+                broken = rule.violation(proposed, self.full_name)
+                if broken is not None:
+                    reasons.append(broken)
+        return typed, reasons
+
+    def watch(self, callback: Callable[[Changes[P]], None]) -> RemoteWatch[P]:
+        """Call ``callback`` with the typed changes of each accepted set on the target.
+
+        Returns a handle: ``ready`` resolves to the first snapshot (every change
+        from there on is reported), ``latest`` is the newest known snapshot, and
+        ``cancel()`` stops watching. The client node must be spun by an executor.
+        """
+        from genparams.runtime.remote_watch import RemoteWatch
+
+        return RemoteWatch(self, callback)
+
+
+def _check_one(param: CompiledParam, value: Any) -> str | tuple[Any]:
+    if param.spec.read_only:
+        return "read-only: set it when the node starts (-p, a params file or launch)"
+    try:
+        typed = param.type.coerce_default(value)
+    except ValueTypeError as exc:
+        return str(exc)
+    reason = param.check(typed)
+    return reason if reason is not None else (typed,)

@@ -1,0 +1,58 @@
+"""Check cross-parameter rules against a proposed change merged into the committed values."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator, Mapping
+from typing import TYPE_CHECKING, Any
+
+from genparams.runtime.spec import CompiledParam, compile_schema
+from genparams.runtime.tree import get_path
+
+if TYPE_CHECKING:
+    from genparams.runtime.params import Params
+
+
+class MergedValues(Mapping[str, Any]):
+    """Proposed values over the committed ones, by relative ROS name; read lazily."""
+
+    def __init__(
+        self,
+        committed: Params,
+        proposed: Mapping[str, Any],
+        parameters: Mapping[str, CompiledParam],
+    ) -> None:
+        self.committed = committed
+        self.proposed = proposed
+        self.parameters = parameters
+
+    def __getitem__(self, name: str) -> Any:
+        if name in self.proposed:
+            return self.proposed[name]
+        return get_path(self.committed, self.parameters[name].attribute_path)
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self.parameters)
+
+    def __len__(self) -> int:
+        return len(self.parameters)
+
+
+def broken_rules(
+    committed: Params, proposed: Mapping[str, Any], shown: Callable[[str], str]
+) -> list[str]:
+    """A reason per rule that ``proposed`` (relative names, typed values) would break.
+
+    Only rules that read a proposed parameter are evaluated: the committed values
+    already satisfy every rule.
+    """
+    compiled = compile_schema(type(committed)._SPEC)
+    rules = compiled.rules_reading(proposed)
+    if not rules:
+        return []
+    values = MergedValues(committed, proposed, compiled.parameters)
+    reasons = []
+    for rule in rules:
+        reason = rule.violation(values, shown)
+        if reason is not None:
+            reasons.append(reason)
+    return reasons

@@ -1,0 +1,83 @@
+"""Path-copying updates of value trees, on hand-written group classes."""
+
+from __future__ import annotations
+
+from genparams.runtime.tree import Group, build_tree, copy_node, replace_values, to_dict
+
+
+class Pid(Group):
+    __slots__ = ("kd", "kp")
+    kd: float
+    kp: float
+
+
+class Arm(Group):
+    __slots__ = ("name", "pid")
+    name: str
+    pid: Pid
+
+
+class Single(Group):
+    __slots__ = ("only",)
+    only: int
+
+
+class WithBinding(Group):
+    """Like Params: a slot that is not a field, copied only when asked for."""
+
+    __slots__ = ("_binding",)
+
+
+class Root(WithBinding):
+    __slots__ = ("arm", "rate", "single")
+    arm: Arm
+    rate: float
+    single: Single
+
+
+GROUPS = {"arm": Arm, "arm.pid": Pid, "single": Single}
+VALUES = {"arm.name": "left", "arm.pid.kd": 0.1, "arm.pid.kp": 1.0, "rate": 5.0, "single.only": 1}
+
+
+def tree() -> Root:
+    return build_tree(Root, GROUPS, VALUES, extra={"_binding": "marker"})
+
+
+def test_one_update_copies_only_its_path() -> None:
+    before = tree()
+    after = replace_values(before, {("arm", "pid", "kp"): 2.0}, extra=("_binding",))
+    assert after.arm.pid.kp == 2.0 and before.arm.pid.kp == 1.0
+    assert after.arm is not before.arm and after.arm.pid is not before.arm.pid
+    assert after.single is before.single  # untouched groups are shared
+    assert after._binding == "marker"  # type: ignore[attr-defined]
+    assert to_dict(after) == {
+        **to_dict(before),
+        "arm": {"name": "left", "pid": {"kd": 0.1, "kp": 2.0}},
+    }
+
+
+def test_many_updates_at_every_depth() -> None:
+    before = tree()
+    after = replace_values(
+        before,
+        {
+            ("rate",): 9.0,
+            ("arm", "name"): "right",
+            ("arm", "pid", "kd"): 0.5,
+            ("single", "only"): 7,
+        },
+    )
+    assert to_dict(after) == {
+        "arm": {"name": "right", "pid": {"kd": 0.5, "kp": 1.0}},
+        "rate": 9.0,
+        "single": {"only": 7},
+    }
+    assert to_dict(before)["rate"] == 5.0
+
+
+def test_copy_of_a_one_field_group_and_of_extra_slots() -> None:
+    root = tree()
+    single = copy_node(root.single)
+    assert single == root.single and single is not root.single
+    copied = copy_node(root, ("_binding",))
+    assert copied == root and copied._binding == "marker"  # type: ignore[attr-defined]
