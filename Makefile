@@ -41,7 +41,7 @@ typecheck: venv
 	$(PYTHON) -m mypy genparams bench
 	cd $(EXAMPLE) && ../../$(PYTHON) -m mypy --config-file ../../pyproject.toml camera_node demo.py
 
-## Rewrite the golden files (example docs, tests/output_cases, tests/check_params_cases) after an intended change of output.
+## Rewrite the golden files (generated modules, bad-schema errors, docs, check-params reports) after an intended change of output.
 golden: venv
 	$(PYTHON) -m tests.update_golden
 

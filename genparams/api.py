@@ -7,9 +7,9 @@ import gc
 from collections.abc import Iterator
 from pathlib import Path
 
-from genparams.builder import build_schema
+from genparams.builder import build_schema, model_problems
 from genparams.errors import Location, SchemaError, SchemaProblem
-from genparams.loader import load_yaml
+from genparams.loader import MAX_BYTES, load_yaml
 from genparams.model import Schema
 from genparams.schema_check import check_document
 
@@ -42,6 +42,14 @@ def _load_schema(path: str | Path, text: str | None) -> Schema:
     file = str(path)
     if text is None:
         try:
+            if Path(path).stat().st_size > MAX_BYTES:  # refuse before reading it into memory
+                raise SchemaError(
+                    [
+                        SchemaProblem(
+                            Location(file, 1, 1), "", f"file is larger than {MAX_BYTES} bytes"
+                        )
+                    ]
+                )
             text = Path(path).read_text(encoding="utf-8")
         except (OSError, UnicodeDecodeError) as exc:
             raise SchemaError(
@@ -50,7 +58,7 @@ def _load_schema(path: str | Path, text: str | None) -> Schema:
     document = load_yaml(text, file)
     problems = check_document(document)
     if problems:
-        raise SchemaError(problems)
+        raise SchemaError([*problems, *model_problems(document, problems)])
     return build_schema(document)
 
 

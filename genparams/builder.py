@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 import os
+from collections.abc import Collection, Iterable, Iterator
 from typing import Any
 
 from genparams import naming
@@ -40,6 +41,24 @@ def build_schema(document: LoadedDocument) -> Schema:
     return schema
 
 
+def model_problems(document: LoadedDocument, known: Iterable[SchemaProblem]) -> list[SchemaProblem]:
+    """The model's own problems in the parts of a document the schema check passed.
+
+    Lets one run report every problem of a file, not the JSON Schema ones first
+    and the rest after they are fixed. Leaves with a known problem are skipped.
+    """
+    data = document.data
+    if not (
+        isinstance(data, dict)
+        and isinstance(data.get("name"), str)
+        and isinstance(data.get("parameters"), dict)
+    ):
+        return []
+    builder = _ModelBuilder(document, skip={problem.key for problem in known})
+    builder.schema()
+    return builder.problems
+
+
 def _frozen(value: Any) -> Any:
     """Lists become tuples, so the model is hashable and immutable."""
     if isinstance(value, list):
@@ -50,10 +69,13 @@ def _frozen(value: Any) -> Any:
 
 
 class _ModelBuilder:
-    def __init__(self, document: LoadedDocument) -> None:
+    def __init__(self, document: LoadedDocument, skip: Collection[str] = ()) -> None:
         self.document = document
         self.problems: list[SchemaProblem] = []
-        self.class_names: set[str] = set()
+        self.skip = skip  # dotted keys with problems already known
+        # Class names already used, and every key of the tree: a group class named like an
+        # attribute would be hidden by it inside the class bodies that mention it.
+        self.class_names: set[str] = set(_keys(document.data.get("parameters")))
         self.leaf_paths: dict[str, Path] = {}  # parameter ROS name -> its document path
         self.mapped: list[tuple[Group, Path]] = []
         self.aliases: list[tuple[str, Path, Parameter]] = []  # (alias, where, its parameter)
@@ -109,6 +131,8 @@ class _ModelBuilder:
             key_path = (*doc_path, key)
             if not self.check_name(key, key_path, attributes, top_level=not path):
                 continue
+            if self.skipped(key_path, whole_tree=isinstance(value, dict) and "type" in value):
+                continue
             child_path = (*member_path, key)
             child_attribute = naming.attribute_name(key)
             if isinstance(value, dict) and "type" in value:
@@ -116,7 +140,7 @@ class _ModelBuilder:
             elif isinstance(value, dict):
                 child_class = self.group_class_name(child_path)
                 groups.append(self.group(value, key_path, child_path, child_attribute, child_class))
-        if not parameters and not groups:
+        if all(key == FOR_EACH for key in mapping):
             what = "namespace" if path else "schema"
             self.problem(doc_path, f"empty {what}: give it parameters", at_key=True)
         group = Group(
@@ -131,6 +155,13 @@ class _ModelBuilder:
         if mapped_over:
             self.mapped.append((group, doc_path))
         return group
+
+    def skipped(self, path: Path, *, whole_tree: bool) -> bool:
+        """Whether a known problem sits at ``path`` (or, for a leaf, anywhere inside it)."""
+        key = dotted(path)
+        if key in self.skip or f"{key}.{FOR_EACH}" in self.skip:
+            return True
+        return whole_tree and any(k.startswith((f"{key}.", f"{key}[")) for k in self.skip)
 
     def group_class_name(self, path: tuple[str, ...]) -> str:
         words = (naming.pascal_case(part) for part in path if part != naming.ENTRY_KEY)
@@ -157,6 +188,14 @@ class _ModelBuilder:
                 key_path,
                 f"name {key!r} is reserved by the generated class's API; "
                 "rename it or move it into a namespace",
+                at_key=True,
+            )
+            return False
+        if key in naming.SHADOWING:
+            self.problem(
+                key_path,
+                f"name {key!r} would hide the Python name {key} that the generated classes "
+                "use; rename it",
                 at_key=True,
             )
             return False
@@ -270,7 +309,12 @@ class _ModelBuilder:
                     ok = False
                     continue
             else:
-                value = float(value)
+                try:
+                    value = float(value)
+                except OverflowError:
+                    self.problem((*range_path, key), f"{key} is too large for a double")
+                    ok = False
+                    continue
                 if math.isnan(value) or (key == "step" and math.isinf(value)):
                     self.problem((*range_path, key), f"{key} must be a finite number")
                     ok = False
@@ -284,7 +328,15 @@ class _ModelBuilder:
                 f"min {values['min']!r} is greater than max {values['max']!r}",
             )
             return None
-        return RangeSpec(values["min"], values["max"], values["step"])
+        step = values["step"]
+        if step and not math.isfinite((values["max"] - values["min"]) / step):
+            # ROS computes (value - min) / step, which must stay a finite double.
+            self.problem(
+                (*range_path, "step"),
+                f"step {step!r} needs finite min and max and (max - min) / step below 1e308",
+            )
+            return None
+        return RangeSpec(values["min"], values["max"], step)
 
     def choices(
         self, leaf: dict[str, Any], doc_path: Path, param_type: ParamType
@@ -365,7 +417,9 @@ class _ModelBuilder:
         """Numeric limits that leave no valid value are a schema error, not a runtime surprise."""
         if param_type.is_array or not param_type.is_numeric:
             return
-        low, low_open, high, high_open = -math.inf, False, math.inf, False
+        low: float = INT64_MIN if param_type.scalar_kind == "int" else -math.inf
+        high: float = INT64_MAX if param_type.scalar_kind == "int" else math.inf
+        low_open = high_open = False
         for _key, check in checks:
             bounds = _limits(check)
             if bounds is None:
@@ -381,6 +435,13 @@ class _ModelBuilder:
                 "range and validators contradict each other: no value satisfies all of them",
                 at_key=True,
             )
+
+
+def _keys(tree: Any) -> Iterator[str]:
+    if isinstance(tree, dict):
+        for key, value in tree.items():
+            yield str(key)
+            yield from _keys(value)
 
 
 def _limits(check: Validator) -> tuple[float, bool, float, bool] | None:

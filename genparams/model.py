@@ -244,7 +244,8 @@ class Schema:
 
     @property
     def docstring(self) -> str:
-        return self.description or f"Parameters of {self.name}."
+        """Module and class docstring. Stripped, because ruff format strips docstrings."""
+        return self.description.strip() or f"Parameters of {self.name}."
 
     @property
     def maps(self) -> tuple[tuple[str, str], ...]:

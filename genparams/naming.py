@@ -17,6 +17,10 @@ RESERVED_TOP_LEVEL = frozenset(
     {"declare", "defaults", "snapshot", "on_change", "to_dict", "remote", "changes"}
 )
 
+# Names the generated classes use inside their bodies (annotations, ClassVar): a
+# parameter or namespace of that name would hide them from type checkers.
+SHADOWING = frozenset({"bool", "bytes", "float", "int", "str", "tuple", "ClassVar"})
+
 
 def is_ros_token(name: str) -> bool:
     return ROS_TOKEN.fullmatch(name) is not None

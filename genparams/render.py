@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import functools
 import math
+import re
 from typing import Any
 
 import jinja2
@@ -14,18 +15,31 @@ from genparams.model import Schema
 from genparams.params_file import ParamsFile
 from genparams.resources import resource_dir
 
+_ESCAPE_OR_DOUBLE_QUOTE = re.compile(r'\\.|"', re.DOTALL)
+
+
+def _ruff_quoted(literal: str, prefix: str = "") -> str:
+    """Re-quote a ``repr`` literal as ruff format would: double quotes, unless the text
+    holds more double than single quotes.
+
+    ``repr`` escapes every character that could end the literal early (quotes,
+    backslashes, newlines, NUL, U+2028 ...), so schema text never becomes code.
+    """
+    body = literal[len(prefix) + 1 : -1]
+    if literal[len(prefix)] == '"' or body.count('"') > body.count("\\'"):
+        return literal
+
+    def requote(match: re.Match[str]) -> str:
+        token = match.group()
+        return {"\\'": "'", '"': '\\"'}.get(token, token)
+
+    return f'{prefix}"{_ESCAPE_OR_DOUBLE_QUOTE.sub(requote, body)}"'
+
 
 def python_literal(value: Any) -> str:
-    """A Python literal for schema data; never lets schema text become code.
-
-    Strings go through ``repr`` (quotes, backslashes, newlines, NUL, U+2028 are
-    escaped), preferring double quotes as ruff format does.
-    """
+    """A Python literal for schema data; never lets schema text become code."""
     if isinstance(value, str):
-        text = repr(value)
-        if text.startswith("'") and '"' not in value:
-            text = '"' + text[1:-1].replace("\\'", "'") + '"'
-        return text
+        return _ruff_quoted(repr(value))
     if isinstance(value, bool) or value is None:
         return repr(value)
     if isinstance(value, int):
@@ -37,10 +51,7 @@ def python_literal(value: Any) -> str:
             return 'float("inf")' if value > 0 else 'float("-inf")'
         return repr(value).replace("e+", "e")  # ruff's spelling of exponents
     if isinstance(value, bytes):
-        text = repr(value)
-        if text.startswith("b'") and '"' not in text:
-            text = 'b"' + text[2:-1].replace("\\'", "'") + '"'
-        return text
+        return _ruff_quoted(repr(value), prefix="b")
     if isinstance(value, tuple):
         if len(value) == 1:
             return f"({python_literal(value[0])},)"

@@ -30,9 +30,11 @@ def build_rules(
         problems.append(SchemaProblem(document.value_location(path), dotted(path), message))
 
     seen: dict[str, int] = {}
-    entries: list[dict[str, Any]] = document.data.get("rules", [])
-    for index, entry in enumerate(entries):
+    entries = document.data.get("rules", [])
+    for index, entry in enumerate(entries if isinstance(entries, list) else []):
         path: Path = ("rules", index)
+        if not _well_formed(entry):
+            continue  # the schema check reports its shape; the other rules are still checked
         name, check = entry["name"], entry["check"]
         description = entry.get("description", "")
         if name in seen:
@@ -59,3 +61,12 @@ def build_rules(
             )
         )
     return tuple(rules), problems
+
+
+def _well_formed(entry: Any) -> bool:
+    return (
+        isinstance(entry, dict)
+        and isinstance(entry.get("name"), str)
+        and isinstance(entry.get("check"), str)
+        and isinstance(entry.get("description", ""), str)
+    )

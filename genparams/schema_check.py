@@ -56,21 +56,38 @@ def _problems(
             error.message.replace("is a required property", "is required"),
         )
         return
-    if error.validator == "enum" and isinstance(error.instance, str):
+    if error.validator == "enum":
         options: list[Any] = list(error.validator_value)  # type: ignore[arg-type]
-        yield SchemaProblem(
-            document.value_location(path),
-            dotted(path),
-            f"{error.instance!r} is not one of {', '.join(map(str, options))}"
-            f"{did_you_mean(error.instance, options)}",
-        )
+        if isinstance(error.instance, dict) and path[-1:] == ("type",):
+            message = (
+                "a mapping with a 'type:' key is a parameter, so a namespace cannot hold "
+                "a parameter named 'type': rename it"
+            )
+        elif isinstance(error.instance, str):
+            message = (
+                f"{error.instance!r} is not one of {', '.join(map(str, options))}"
+                f"{did_you_mean(error.instance, options)}"
+            )
+        else:
+            message = f"{_json(error.instance)} is not one of {', '.join(map(str, options))}"
+        yield SchemaProblem(document.value_location(path), dotted(path), message)
         return
     if error.validator == "anyOf" and len(path) >= 2 and path[-2] == "validators":
         yield SchemaProblem(
             document.value_location(path), dotted(path), _validator_message(error.instance)
         )
         return
-    if error.validator == "type" and path[:1] == ("parameters",) and schema.get("type") == "object":
+    if not path and error.validator == "type":
+        yield SchemaProblem(
+            document.value_location(path),
+            "",
+            "a schema is a mapping with genparams, name and parameters; "
+            f"got {_json(error.instance)}",
+        )
+        return
+    # Only namespaces take any key whose value is another node.
+    is_namespace = isinstance(schema.get("additionalProperties"), dict)
+    if error.validator == "type" and path[:1] == ("parameters",) and is_namespace:
         yield SchemaProblem(
             document.value_location(path),
             dotted(path),
@@ -84,6 +101,8 @@ def _problems(
 def _validator_message(instance: Any) -> str:
     from genparams.validators import KINDS
 
+    if isinstance(instance, str) and instance in KINDS:
+        return f"validator {instance!r} needs an argument: {{{instance}: ...}}"
     if isinstance(instance, str):
         return f"unknown validator {instance!r}{did_you_mean(instance, KINDS)}"
     if isinstance(instance, dict) and len(instance) == 1:

@@ -8,7 +8,6 @@ Python so both the code generator and the runtime can use it.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import Any
 
@@ -106,18 +105,37 @@ def _convert_scalar(kind: str, value: Any, lenient_double: bool) -> Any:
         if isinstance(value, float):
             return value
         if lenient_double and isinstance(value, int) and not isinstance(value, bool):
-            converted = float(value)
-            if math.isinf(converted):
-                raise ValueTypeError(f"integer {value} is too large for a double")
-            return converted
+            try:
+                return float(value)
+            except OverflowError:
+                raise ValueTypeError(f"{_describe(value)} is too large for a double") from None
         if isinstance(value, int) and not isinstance(value, bool):
             raise ValueTypeError(
                 f"expected double, got integer {value} (ROS does not convert: write {value}.0)"
             )
     elif kind == "string":
         if isinstance(value, str):
+            problem = ros_text_problem(value)
+            if problem is not None:
+                raise ValueTypeError(problem)
             return value
     raise ValueTypeError(f"expected {_SCALAR_NAMES[kind]}, got {_describe(value)}")
+
+
+def ros_text_problem(text: str) -> str | None:
+    """Why ROS cannot carry ``text`` unchanged, or None.
+
+    ROS sends strings as NUL-terminated UTF-8: a NUL would silently cut the
+    string in the parameter services, and a lone surrogate cannot be encoded
+    at all (rclpy fails after the node already stored the value).
+    """
+    if "\x00" in text:
+        return "text cannot contain NUL (\\x00): ROS strings end at the first NUL"
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:
+        return "text must be valid UTF-8 (it contains a lone surrogate)"
+    return None
 
 
 def _convert_bytes(value: Any) -> bytes:

@@ -110,6 +110,8 @@ class RosRange:
 
     def _problem(self, value: Any) -> str | None:
         if self.integer:
+            if value == self.low or value == self.high:  # rclpy: edges are always valid
+                return None
             if not self.low <= value <= self.high:
                 return "out of range"
             if self.step and (value - self.low) % self.step != 0:
@@ -297,6 +299,8 @@ class ValidatorArgumentError(ValueError):
 def _number(arg: Any, what: str) -> float:
     if isinstance(arg, bool) or not isinstance(arg, (int, float)):
         raise ValidatorArgumentError(f"{what} must be a number, got {_fmt(arg)}")
+    if isinstance(arg, float) and math.isnan(arg):
+        raise ValidatorArgumentError(f"{what} must be a number, not NaN (nothing compares to NaN)")
     return arg
 
 

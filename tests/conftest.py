@@ -13,6 +13,7 @@ from collections.abc import Iterator
 
 import pytest
 
+from tests import budget  # noqa: F401  (registers and loads the Hypothesis profile)
 from tests.support import RosHarness
 
 

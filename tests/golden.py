@@ -1,4 +1,8 @@
-"""Golden files: what each case folder expects, computed the one way tests compare it."""
+"""Golden files: what each case folder expects, computed the one way tests compare it.
+
+Generated modules (tests/cases), other outputs (tests/output_cases), check-params
+reports (tests/check_params_cases) and CLI errors of bad schemas (tests/bad_schemas).
+"""
 
 from __future__ import annotations
 
@@ -10,6 +14,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
+import genparams
 from genparams.api import load_schema
 from genparams.cli import main
 from genparams.docs_model import docs_page
@@ -22,6 +27,8 @@ ROOT = TESTS.parent
 EXAMPLE_SCHEMA = ROOT / "examples" / "camera_node" / "camera_driver.yaml"
 OUTPUT_CASES = TESTS / "output_cases"
 CHECK_PARAMS_CASES = TESTS / "check_params_cases"
+CASES = TESTS / "cases"
+BAD_SCHEMAS = TESTS / "bad_schemas"
 
 
 @dataclass(frozen=True)
@@ -108,3 +115,39 @@ def update() -> None:
     for case in check_params_cases():
         _code, text = check_params_output(case)
         (case / "expected.txt").write_text(text, encoding="utf-8")
+
+
+def case_dirs() -> list[Path]:
+    return sorted(path.parent for path in CASES.glob("*/schema.yaml"))
+
+
+def render_case(case: Path) -> str:
+    return genparams.generate(case / "schema.yaml")
+
+
+def bad_schemas() -> list[Path]:
+    return sorted(BAD_SCHEMAS.glob("*.yaml"))
+
+
+def relative(text: str) -> str:
+    """Error output with the checkout's path removed, so goldens hold ``tests/...`` paths."""
+    return text.replace(f"{ROOT}/", "")
+
+
+def run_cli(*argv: str) -> tuple[int, str]:
+    """Run the genparams command in-process: (exit code, stderr with relative paths)."""
+    stderr = io.StringIO()
+    with contextlib.redirect_stderr(stderr), contextlib.redirect_stdout(io.StringIO()):
+        try:
+            code = main(list(argv))
+        except SystemExit as exc:  # argparse usage errors
+            code = exc.code if isinstance(exc.code, int) else 2
+    return code, relative(stderr.getvalue())
+
+
+def validate_stderr(schema: Path) -> tuple[int, str]:
+    return run_cli("validate", str(schema))
+
+
+def expected_stderr_path(schema: Path) -> Path:
+    return schema.with_suffix(".stderr")

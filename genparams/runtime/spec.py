@@ -80,6 +80,7 @@ class CompiledParam:
 
     Compared and hashed by identity (one per parameter, cached with its schema):
     it keys the updates of every set, where hashing all its fields cost ~1 us.
+    Identity also lets a spec hold unhashable validator arguments (``length: {max: 12}``).
     """
 
     spec: ParamSpec

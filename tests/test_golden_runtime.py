@@ -1,0 +1,51 @@
+"""Every golden module, imported and declared on a real node, reads back its defaults.
+
+A case may hold ``overrides.yaml`` (relative name -> value) for its required
+parameters; those values must read back too.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import pytest
+import yaml
+from rclpy.parameter import Parameter
+
+from genparams.runtime.spec import compile_schema
+from genparams.types import TYPES
+from tests.golden import case_dirs
+from tests.readback import mismatches, params_class, read_back
+from tests.support import RosHarness, import_file
+
+
+def overrides(case: Path) -> dict[str, Any]:
+    path = case / "overrides.yaml"
+    data = yaml.safe_load(path.read_text(encoding="utf-8")) if path.exists() else {}
+    assert isinstance(data, dict)
+    return data
+
+
+@pytest.mark.parametrize("case", case_dirs(), ids=lambda case: case.name)
+def test_golden_module_declares_and_reads_back(ros: RosHarness, case: Path) -> None:
+    cls = params_class(import_file(case / "expected_params.py"))
+    compiled = compile_schema(cls._SPEC)
+    given = overrides(case)
+    expected = {}
+    for name, param in compiled.parameters.items():
+        param_type = TYPES[param.spec.type]
+        source = given[name] if param.spec.required else param.spec.default
+        expected[name] = param_type.coerce_default(source)
+    parameters = [
+        Parameter(
+            name,
+            Parameter.Type(TYPES[compiled.parameters[name].spec.type].ros_type),
+            TYPES[compiled.parameters[name].spec.type].to_ros(expected[name]),
+        )
+        for name in given
+    ]
+    node = ros.node(parameter_overrides=parameters)
+    cfg = cls.declare(node)
+    assert mismatches(read_back(ros, node, cfg), expected) == {}
+    assert cls.defaults(given).to_dict() == cfg.to_dict()
