@@ -18,6 +18,7 @@ from rclpy.parameter import Parameter
 
 from genparams.runtime.declaring import Declaration, descriptor_for, ros_parameter
 from genparams.runtime.deprecation import Notices
+from genparams.runtime.rewrites import add_rewrite
 from genparams.runtime.spec import CompiledParam
 
 _ACCEPTED = SetParametersResult(successful=True)
@@ -62,10 +63,10 @@ class Aliases:
         return out
 
     def attach(self) -> None:
-        self.node.add_pre_set_parameters_callback(self.pre_set)
+        add_rewrite(self.node, self.pre_set)
         self.node.add_on_set_parameters_callback(self.on_set)
 
-    def pre_set(self, parameters: Sequence[Parameter]) -> list[Parameter]:
+    def pre_set(self, parameters: list[Parameter]) -> list[Parameter]:
         """The request plus the other name of every renamed parameter it sets."""
         requested = {parameter.name for parameter in parameters}
         mirrored = []

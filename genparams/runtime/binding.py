@@ -7,6 +7,7 @@ anywhere leaves the view untouched.
 
 from __future__ import annotations
 
+import collections
 import functools
 import threading
 import traceback
@@ -28,6 +29,7 @@ from genparams.runtime.errors import ParameterDeclarationError
 from genparams.runtime.mapped import MappedEntries
 from genparams.runtime.overrides import OverrideReader
 from genparams.runtime.params import Params
+from genparams.runtime.rewrites import add_rewrite, typed_empty_arrays
 from genparams.runtime.rule_check import broken_rules
 from genparams.runtime.spec import CompiledParam, compile_schema
 from genparams.runtime.tree import build_tree, copy_node, get_path, replace_values
@@ -96,6 +98,9 @@ class Binding(Generic[P]):
         live = copy_node(binding.current)
         object.__setattr__(live, "_binding", binding)
         binding.live = live
+        if any(param.type.is_array for param in owned.values()):
+            old_names = {old: owned[cur] for old, cur in aliases.current_of.items()}
+            add_rewrite(node, typed_empty_arrays(collections.ChainMap(binding.owned, old_names)))
         node.add_on_set_parameters_callback(binding.on_set)
         node.add_post_set_parameters_callback(binding.on_post_set)
         # Mapped groups, old names and deprecations each watch the node on their own.
