@@ -48,7 +48,7 @@ def check_maps(
         elif param.type.name != "string_array":
             report(
                 where,
-                f"for_each names {target!r}, a {param.type.name} parameter; "
+                f"for_each names {target!r}, which is of type {param.type.name}; "
                 "it must name a string_array parameter",
             )
         elif not param.required:

@@ -51,8 +51,8 @@ def test_for_each_must_name_a_fixed_string_array_parameter(tmp_path: Path) -> No
     assert problems(tmp_path, body) == [
         "bad.yaml:9:15: parameters.gains.for_each: for_each names 'jionts', "
         "which is not a parameter (did you mean 'joints'?)",
-        "bad.yaml:13:15: parameters.by_rate.for_each: for_each names 'rate', a double "
-        "parameter; it must name a string_array parameter",
+        "bad.yaml:13:15: parameters.by_rate.for_each: for_each names 'rate', which is of "
+        "type double; it must name a string_array parameter",
         "bad.yaml:16:15: parameters.by_namespace.for_each: for_each names 'camera', "
         "a namespace; it must name a string_array parameter",
         "bad.yaml:19:15: parameters.by_entry.for_each: for_each names 'gains.names', inside "
