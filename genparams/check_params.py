@@ -17,7 +17,7 @@ from typing import Any
 
 from genparams.errors import Location, SchemaProblem
 from genparams.model import Schema
-from genparams.naming import ENTRY_KEY, is_ros_token
+from genparams.naming import ENTRY_KEY, ENTRY_KEY_RULE, is_entry_key
 from genparams.params_reader import ParamEntry, ParamsDocument, Section
 from genparams.ros_yaml import node_matches, ros_type_name
 from genparams.runtime.entries import expand
@@ -185,10 +185,10 @@ class _Checker:
             maps = [".".join(pattern[:i]) for i, t in enumerate(pattern) if t == ENTRY_KEY]
             for key, mapped in zip(keys, maps, strict=True):
                 key_name = self.compiled.maps[mapped]
-                if not is_ros_token(key):
+                if not is_entry_key(key):
                     message = (
-                        f"unknown parameter: {key!r} cannot be an item of {key_name} (not a "
-                        "name token): ROS would ignore it"
+                        f"unknown parameter: {key!r} cannot be an item of {key_name} (use "
+                        f"{ENTRY_KEY_RULE}): no entry would ever have this name"
                     )
                     self.problems.append(SchemaProblem(entry.key_location, entry.name, message))
                     return True

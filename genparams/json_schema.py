@@ -39,7 +39,7 @@ from genparams.yaml_text import value_text
 DRAFT = "https://json-schema.org/draft/2020-12/schema"
 _TOKEN = "(\\*\\*|\\*|[A-Za-z_][A-Za-z0-9_]*)"
 NODE_KEY_PATTERN = f"^/?{_TOKEN}(/{_TOKEN})*$"
-ENTRY_KEY_PATTERN = "^[A-Za-z][A-Za-z0-9_]*$"  # the key of a mapped entry: a name token
+ENTRY_KEY_PATTERN = "^[A-Za-z0-9_-]+$"  # the key of a mapped entry: naming.ENTRY_KEY_TEXT
 # Parameters every rclpy node declares itself; a params file may set them for any node.
 BUILTIN_PARAMETERS: dict[str, dict[str, Any]] = {
     "use_sim_time": {"type": "boolean", "description": "Use /clock for time (every ROS node)."},

@@ -34,20 +34,28 @@ def is_ros_name(name: str) -> bool:
 # In the names of a mapped group's parameters, this segment stands for one key.
 ENTRY_KEY = "*"
 
+# An item of a for_each key list becomes one segment of its entries' ROS names.
+# Params files, launch files and the parameter services carry any such segment,
+# so keys may be "left-arm" or "1st"; only rcl's `-p name:=value` parser wants
+# name tokens, so overrides for those entries come from params files.
+ENTRY_KEY_TEXT = re.compile(r"[A-Za-z0-9_-]+")
+ENTRY_KEY_RULE = "letters, digits, '_' and '-'"
+
+
+def is_entry_key(key: str) -> bool:
+    return ENTRY_KEY_TEXT.fullmatch(key) is not None
+
 
 def entry_key_problem(keys: Sequence[str], maps: str) -> str | None:
     """Why the items of a ``for_each`` parameter cannot name the entries of ``maps``, or None.
 
-    Each item becomes one segment of the entries' ROS names, so it must be a
-    name token, and distinct.
+    Each item becomes one segment of the entries' ROS names, so it must be
+    non-empty text of ``ENTRY_KEY_RULE``, and distinct.
     """
     seen: set[str] = set()
     for index, key in enumerate(keys):
-        if not is_ros_token(key):
-            return (
-                f"item {index} {key!r} cannot name an entry of {maps}: "
-                "use letters, digits and underscores, starting with a letter"
-            )
+        if not is_entry_key(key):
+            return f"item {index} {key!r} cannot name an entry of {maps}: use {ENTRY_KEY_RULE}"
         if key in seen:
             return f"item {index} {key!r} repeats: each item names one entry of {maps}"
         seen.add(key)

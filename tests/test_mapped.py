@@ -175,15 +175,53 @@ def test_keys_named_like_fields_methods_and_keywords(
     assert cfg.gains["rate"].p == 4.0 and cfg.rate == 10.0
 
 
-def test_key_that_is_not_a_name_token_is_rejected(ros: RosHarness, arm: types.ModuleType) -> None:
+def test_keys_with_dashes_and_leading_digits_work_through_services(
+    ros: RosHarness, arm: types.ModuleType, tmp_path: Path
+) -> None:
+    """`left-arm` and `1st` are ROS name segments the services and params files carry."""
+    node = ros.node(args=params_file(tmp_path, "gains:\n  left-arm: {p: 2.5}\n  1st: {i: 0.25}"))
+    cfg = arm.ArmParams.declare(node)
+    client = ros.client(node)
+    (result,) = client.set(Parameter("joints", value=["shoulder", "left-arm", "1st"]))
+    assert result.successful, result.reason
+    assert list(cfg.gains) == ["shoulder", "left-arm", "1st"]
+    assert cfg.gains["left-arm"].p == 2.5 and cfg.gains["1st"].i == 0.25  # params-file overrides
+    assert client.get("gains.left-arm.p", "gains.1st.i") == [2.5, 0.25]
+    assert "gains.left-arm.limits.max" in listed(client, "gains")
+
+    (result,) = client.set(Parameter("gains.left-arm.p", value=3.0))
+    assert result.successful, result.reason
+    assert cfg.gains["left-arm"].p == 3.0 and node.get_parameter("gains.left-arm.p").value == 3.0
+    (result,) = client.set(Parameter("gains.1st.limits.max", value=9.0))
+    assert "gains.1st.limits.max" in _reason(result) and cfg.gains["1st"].limits.max == 2.0
+
+    (result,) = client.set(Parameter("joints", value=["1st"]))
+    assert result.successful, result.reason
+    assert list(cfg.gains) == ["1st"]
+    assert not node.has_parameter("gains.left-arm.p")
+    assert "gains.left-arm.p" not in listed(client, "gains")
+
+
+@pytest.mark.parametrize("key", ["left.arm", "a b", "", "arm/left", "ü"])
+def test_key_that_cannot_name_an_entry_is_rejected(
+    ros: RosHarness, arm: types.ModuleType, key: str
+) -> None:
     node = ros.node()
     cfg = arm.ArmParams.declare(node)
     client = ros.client(node)
-    (result,) = client.set(Parameter("joints", value=["shoulder", "left-arm"]))
+    (result,) = client.set(Parameter("joints", value=["shoulder", key]))
     assert _reason(result) == (
-        "joints: item 1 'left-arm' cannot name an entry of gains: "
-        "use letters, digits and underscores, starting with a letter (for_each)"
+        f"joints: item 1 {key!r} cannot name an entry of gains: "
+        "use letters, digits, '_' and '-' (for_each)"
     )
+    assert cfg.joints == ("shoulder", "elbow") and list(cfg.gains) == ["shoulder", "elbow"]
+    assert node.get_parameter("joints").value == ["shoulder", "elbow"]
+
+
+def test_repeated_key_is_rejected(ros: RosHarness, arm: types.ModuleType) -> None:
+    node = ros.node()
+    cfg = arm.ArmParams.declare(node)
+    client = ros.client(node)
     (result,) = client.set(Parameter("joints", value=["a", "a"]))
     assert (
         _reason(result)
@@ -191,7 +229,9 @@ def test_key_that_is_not_a_name_token_is_rejected(ros: RosHarness, arm: types.Mo
     )
     assert cfg.joints == ("shoulder", "elbow")
     (described,) = client.describe("joints")
-    assert "each item names an entry of gains" in described.additional_constraints
+    assert "each item names an entry of gains: letters, digits, '_' and '-'; no repeats" in (
+        described.additional_constraints
+    )
 
     bad = ros.node(args=["-p", "fingers:=[thumb, '']"])
     with pytest.raises(ParameterDeclarationError, match=r"fingers: override rejected: item 1 ''"):

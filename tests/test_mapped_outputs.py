@@ -37,6 +37,9 @@ def errors(validator: jsonschema.Draft202012Validator, params: str) -> list[str]
         "gains: {wrist.tips: {pinky: {force: 1.0}}}",
         "tool: {hammer: {weight: 0.5}}",
         "joints: [left, right_2]",
+        "joints: [left-arm, 1st]",
+        "gains: {left-arm: {p: 2.0}, 1st: {tips: {index-2: {force: 1.0}}}}",
+        "gains.left-arm.limits.effort: 1.0",
         "speed_limit: 2.0",
         "limits: {speed: 2.0}",
         "limits.speed: 2.0",
@@ -54,13 +57,13 @@ def test_entries_for_any_key_and_old_names_validate(
 @pytest.mark.parametrize(
     ("params", "expected"),
     [
-        ("gains: {left-arm: {p: 1.0}}", "additionalProperties: 'left-arm' does not match"),
+        ("gains: {left arm: {p: 1.0}}", "additionalProperties: 'left arm' does not match"),
         ("gains: {wrist: {q: 1.0}}", "additionalProperties: 'q' does not match"),
         ("gains.wrist.q: 1.0", "additionalProperties: 'gains.wrist.q' does not match"),
         ("gains: {wrist: {p: -1.0}}", "minimum: -1.0 is less than the minimum of 0.0"),
         ("gains.wrist.limits.effort: 9.0", "maximum: 9.0 is greater than the maximum of 5.0"),
         ("joints: [a, a]", "uniqueItems: ['a', 'a'] has non-unique elements"),
-        ("joints: [left-arm]", "pattern: 'left-arm' does not match"),
+        ("joints: [left.arm]", "pattern: 'left.arm' does not match"),
         (
             "limits: {sped: 1.0}",
             "additionalProperties: Additional properties are not allowed ('sped'",
@@ -96,6 +99,5 @@ def test_docs_name_the_key_parameter_and_old_names() -> None:
     assert max_speed.old_names == "speed_limit, limits.speed"
     (joints,) = [p for p in by_name[""].parameters if p.name == "joints"]
     assert joints.constraints == (
-        "each item names an entry of gains: letters, digits and underscores, "
-        "starting with a letter; no repeats",
+        "each item names an entry of gains: letters, digits, '_' and '-'; no repeats",
     )

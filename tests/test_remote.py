@@ -239,3 +239,18 @@ def test_mapped_entries_through_remote(ros: RosHarness, tmp_path: Path) -> None:
         ("joints", ("shoulder", "elbow"), ("shoulder", "wrist")),
     ]
     watch.cancel()
+
+
+def test_entries_with_dashed_keys_through_remote(ros: RosHarness, tmp_path: Path) -> None:
+    arm = load_generated(ROOT / "examples" / "arm" / "arm.yaml", tmp_path)
+    target = ros.node()
+    cfg = arm.ArmParams.declare(target)
+    remote = arm.ArmParams.remote(ros.node(), target.get_fully_qualified_name())
+    assert remote.wait_for_services(timeout_sec=10.0)
+    ros.wait(remote.set({"joints": ["left-arm", "1st"]}))
+    ros.wait(remote.set({"gains.left-arm.p": 2.5}))
+    assert cfg.gains["left-arm"].p == 2.5
+    with pytest.raises(RemoteSetError, match=r"gains\.1st\.i: must be >= 0\.0"):
+        remote.set({"gains.1st.i": -1.0}).result()
+    snapshot = ros.wait(remote.get())
+    assert snapshot == cfg.snapshot() and list(snapshot.gains) == ["left-arm", "1st"]

@@ -63,17 +63,16 @@ def test_for_each_must_name_a_fixed_string_array_parameter(tmp_path: Path) -> No
     ]
 
 
-def test_for_each_default_keys_must_be_name_tokens(tmp_path: Path) -> None:
+def test_for_each_default_keys_must_be_able_to_name_entries(tmp_path: Path) -> None:
     body = """\
-  joints: {type: string_array, default: [left, left-arm]}
+  joints: {type: string_array, default: [left-arm, left.arm]}
   gains:
     for_each: joints
     p: {type: double, default: 1.0}
 """
     assert problems(tmp_path, body) == [
         "bad.yaml:4:41: parameters.joints.default: default violates for_each: item 1 "
-        "'left-arm' cannot name an entry of gains: use letters, digits and underscores, "
-        "starting with a letter",
+        "'left.arm' cannot name an entry of gains: use letters, digits, '_' and '-'",
     ]
 
 

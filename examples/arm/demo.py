@@ -49,12 +49,12 @@ def main() -> int:
         print(f"max_speed = {cfg.max_speed} (given as speed_limit in params.yaml)")
         show(cfg, node)
 
-        print("set joints := [shoulder, wrist]")
-        node.set_parameters([Parameter("joints", value=["shoulder", "wrist"])])
+        print("set joints := [shoulder, wrist, left-arm]")
+        node.set_parameters([Parameter("joints", value=["shoulder", "wrist", "left-arm"])])
         show(cfg, node)
 
-        (result,) = node.set_parameters([Parameter("joints", value=["left-arm"])])
-        print(f"set joints := [left-arm] -> rejected: {result.reason}")
+        (result,) = node.set_parameters([Parameter("joints", value=["left.arm"])])
+        print(f"set joints := [left.arm] -> rejected: {result.reason}")
 
         node.set_parameters([Parameter("speed_limit", value=0.5)])
         speeds = [node.get_parameter(n).value for n in ("max_speed", "speed_limit")]

@@ -18,7 +18,7 @@ from rclpy.parameter import Parameter, parameter_value_to_python
 from rclpy.parameter_client import AsyncParameterClient
 from rclpy.task import Future
 
-from genparams.naming import ENTRY_KEY, is_ros_token, join_prefix
+from genparams.naming import ENTRY_KEY, is_entry_key, join_prefix
 from genparams.runtime.binding import check_prefix
 from genparams.runtime.changes import Changes
 from genparams.runtime.entries import expand, instantiate
@@ -168,7 +168,7 @@ class RemoteParams(Generic[P]):
                 t in (p, ENTRY_KEY) for p, t in zip(parts, pattern, strict=True)
             ):
                 keys = [p for p, t in zip(parts, pattern, strict=True) if t == ENTRY_KEY]
-                if all(is_ros_token(key) for key in keys):
+                if all(is_entry_key(key) for key in keys):
                     return instantiate(template, keys)
         return None
 

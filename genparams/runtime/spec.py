@@ -6,7 +6,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from genparams.naming import ENTRY_KEY, attribute_name, entry_key_problem
+from genparams.naming import ENTRY_KEY, ENTRY_KEY_RULE, attribute_name, entry_key_problem
 from genparams.rules import CompiledRule, RuleError, compile_rule, rules_by_parameter
 from genparams.types import TYPES, ParamType
 from genparams.validators import OneOf, RosRange, SubsetOf, Validator, build_validator
@@ -58,7 +58,7 @@ class SchemaSpec:
 
 @dataclass(frozen=True)
 class EntryKeys:
-    """The items of a ``for_each`` parameter name mapped entries: distinct name tokens."""
+    """The items of a ``for_each`` parameter name mapped entries: distinct, of ENTRY_KEY_RULE."""
 
     maps: str  # the mapped groups it keys, for messages
     rule: str = "for_each"
@@ -68,10 +68,7 @@ class EntryKeys:
         return None if reason is None else f"{reason} ({self.rule})"
 
     def describe(self) -> str:
-        return (
-            f"each item names an entry of {self.maps}: letters, digits and underscores, "
-            "starting with a letter; no repeats"
-        )
+        return f"each item names an entry of {self.maps}: {ENTRY_KEY_RULE}; no repeats"
 
 
 @dataclass(frozen=True, eq=False)
