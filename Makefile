@@ -6,7 +6,7 @@ VENV ?= .venv
 PYTHON := $(VENV)/bin/python
 EXAMPLE := examples/camera_node
 
-.PHONY: venv demo demo-arm tour test check lint typecheck golden bench bench-quick clean
+.PHONY: venv demo demo-arm tour test check lint typecheck golden bench bench-quick bench-profile clean
 
 $(VENV)/.installed: pyproject.toml
 	python3 -m venv $(VENV)
@@ -52,6 +52,10 @@ bench: venv
 ## The benchmarks up to 1,000 parameters with three repeats, into build/bench-quick/.
 bench-quick: venv
 	$(PYTHON) -m bench --quick
+
+## Where the time of a declare and of one set goes, at 100 and 1,000 parameters (docs/benchmarks-profile.md).
+bench-profile: venv
+	$(PYTHON) -m bench.profile
 
 clean:
 	rm -rf $(VENV) build dist .mypy_cache .ruff_cache .pytest_cache

@@ -181,11 +181,12 @@ def test_arm_demo_runs() -> None:
         "max_speed = 2.0 (given as speed_limit in params.yaml)",
         "  cfg.gains = {'shoulder': (1.0, 0.0), 'elbow': (1.0, 0.0)}",
         "  node parameters under gains: ['elbow.i', 'elbow.p', 'shoulder.i', 'shoulder.p']",
-        "set joints := [shoulder, wrist]",
-        "  cfg.gains = {'shoulder': (1.0, 0.0), 'wrist': (2.5, 0.0)}",
-        "  node parameters under gains: ['shoulder.i', 'shoulder.p', 'wrist.i', 'wrist.p']",
-        "set joints := [left-arm] -> rejected: joints: item 0 'left-arm' cannot name an entry "
-        "of gains: use letters, digits and underscores, starting with a letter (for_each)",
+        "set joints := [shoulder, wrist, left-arm]",
+        "  cfg.gains = {'shoulder': (1.0, 0.0), 'wrist': (2.5, 0.0), 'left-arm': (1.0, 0.1)}",
+        "  node parameters under gains: ['left-arm.i', 'left-arm.p', 'shoulder.i', 'shoulder.p', "
+        "'wrist.i', 'wrist.p']",
+        "set joints := [left.arm] -> rejected: joints: item 0 'left.arm' cannot name an entry "
+        "of gains: use letters, digits, '_' and '-' (for_each)",
         "set speed_limit := 0.5 -> max_speed, speed_limit = [0.5, 0.5]; cfg: 0.5",
     ]
     assert len(warnings_about(result.stderr, "speed_limit")) == 1

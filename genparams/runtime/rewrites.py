@@ -51,7 +51,9 @@ def add_rewrite(node: Node, rewrite: Rewrite) -> None:
 
 def _chain(rewrites: list[Rewrite]) -> Callable[[Sequence[Parameter]], list[Parameter]]:
     def pre_set(parameters: Sequence[Parameter]) -> list[Parameter]:
-        request = list(parameters)
+        # rclpy copies what this returns into a list of its own, so an unchanged
+        # request is handed back as it came: a set is on the hot path.
+        request = parameters if isinstance(parameters, list) else list(parameters)
         for rewrite in tuple(rewrites):
             request = rewrite(request)
         return request
@@ -70,6 +72,8 @@ def typed_empty_arrays(declared: Mapping[str, CompiledParam]) -> Rewrite:
     """
 
     def rewrite(parameters: list[Parameter]) -> list[Parameter]:
+        if not any(_is_empty_array(parameter) for parameter in parameters):
+            return parameters
         return [
             _retyped(parameter, declared) if _is_empty_array(parameter) else parameter
             for parameter in parameters
