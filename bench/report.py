@@ -329,7 +329,9 @@ def markdown(results: Sequence[Result], machine: dict[str, str], command: str) -
         "CPU time of the measuring thread (`time.thread_time`), which other processes on a "
         "shared machine barely inflate; service round trips are wall-clock time, and whole "
         "processes are shown both ways. Samples of the two sides alternate. The raw numbers are in "
-        "[benchmarks.csv](benchmarks.csv).\n\n"
+        "[benchmarks.csv](benchmarks.csv). Where the time of a declare and of one set goes, "
+        "and why those targets are missed: [benchmarks-profile.md](benchmarks-profile.md) "
+        "(`make bench-profile`).\n\n"
     )
     out.write(
         "The schemas have N parameters in groups of ten, one of each kind (double with a "

@@ -12,6 +12,7 @@ import pytest
 from rclpy.parameter import Parameter
 
 import genparams
+from bench.profile import DECLARE_STEPS, SET_STEPS
 from bench.report import SECTIONS
 from bench.schemas import KINDS, bench_schema
 from bench.workspace import import_fresh, prepare
@@ -91,3 +92,24 @@ def test_quick_benchmark_writes_every_scenario(tmp_path: Path) -> None:
         assert f"## {section.title}" in report
     assert "_not measured in this run_" not in report
     assert "| declare: within 1.2x" in report
+
+
+def test_profile_splits_declare_and_set_into_steps() -> None:
+    result = subprocess.run(
+        [sys.executable, "-m", "bench.profile", "--sizes", "10", "--sets", "100"],
+        cwd=ROOT,
+        env=dict(os.environ),
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert result.returncode == 0, result.stderr
+    lines = result.stdout.splitlines()
+    assert "## N = 10" in lines
+    assert [line.split(":")[0] for line in lines if "ratio" in line] == [
+        "declare",
+        "one set (node.set_parameters)",
+    ]
+    for steps in (DECLARE_STEPS, SET_STEPS):
+        for label in list(steps)[:-1]:  # the last is the whole call the shares refer to
+            assert any(line.startswith(f"  - {label}: ") for line in lines), label
