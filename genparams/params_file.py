@@ -12,7 +12,7 @@ start until one is given) and subnormal doubles (ROS reads them as strings).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from genparams import __version__
 from genparams.model import Group, Parameter, Schema
@@ -45,6 +45,11 @@ class ParamsFile:
     params_key: str
     entries: tuple[Entry, ...]
 
+    @property
+    def params_value(self) -> str:
+        """``{}`` when every entry is commented out: rcl refuses an empty section."""
+        return "" if any(not entry.disabled for entry in self.entries) else "{}"
+
 
 def section_name(node: str | None) -> str:
     """The section name for ``--node`` (``/**`` when absent); raises NodeNameError."""
@@ -69,8 +74,34 @@ def default_params_file(
         header=header,
         node_key=node_key_text(section_name(node)),
         params_key=PARAMS_KEY,
-        entries=tuple(_group_entries(schema.root, _STEP * 2, comments, _default_keys(schema))),
+        entries=_without_empty_namespaces(
+            _group_entries(schema.root, _STEP * 2, comments, _default_keys(schema))
+        ),
     )
+
+
+def _without_empty_namespaces(entries: list[Entry]) -> tuple[Entry, ...]:
+    """Namespace headers with no value written below them, commented out.
+
+    A header with nothing under it reads as a null value, which rcl refuses
+    (every parameter below it required, say).
+    """
+    out = []
+    for index, entry in enumerate(entries):
+        if entry.value == "" and not entry.disabled and not _writes_below(entries, index):
+            entry = replace(entry, disabled=True)
+        out.append(entry)
+    return tuple(out)
+
+
+def _writes_below(entries: list[Entry], index: int) -> bool:
+    depth = len(entries[index].indent)
+    for entry in entries[index + 1 :]:
+        if len(entry.indent) <= depth:
+            return False
+        if entry.value and not entry.disabled:
+            return True
+    return False
 
 
 def _default_keys(schema: Schema) -> dict[str, tuple[str, ...]]:

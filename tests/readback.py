@@ -50,15 +50,22 @@ def read_back(
     prefix: str = "",
     client: ServiceClient | None = None,
 ) -> dict[str, tuple[Any, Any, Any]]:
-    """Relative name -> (through cfg, through node.get_parameter, through the service)."""
-    compiled = compile_schema(type(cfg)._SPEC)
-    names = list(compiled.parameters)
+    """Relative name -> (through cfg, through node.get_parameter, through the service).
+
+    Entries of mapped groups are read too: the declared class knows which it declared.
+    """
+    binding = getattr(cfg, "_binding", None)
+    if binding is not None:
+        parameters = {param.name: param for param in binding.owned.values()}
+    else:
+        parameters = dict(compile_schema(type(cfg)._SPEC).parameters)
+    names = list(parameters)
     full = [join_prefix(prefix, name) for name in names]
     client = client or ros.client(node)
     served = client.get(*full) if full else []
     out = {}
     for name, full_name, service_value in zip(names, full, served, strict=True):
-        param = compiled.parameters[name]
+        param = parameters[name]
         param_type = TYPES[param.spec.type]
         out[name] = (
             get_path(cfg, param.attribute_path),

@@ -129,7 +129,13 @@ def names(*, top_level: bool) -> st.SearchStrategy[str]:
         st.from_regex(r"[a-z][a-z0-9_]{60,120}", fullmatch=True),
     )
     excluded = REJECTED | (RESERVED_TOP_LEVEL if top_level else {"type"})
-    return tokens.filter(lambda name: name not in excluded and ROS_TOKEN.fullmatch(name))
+    return tokens.filter(
+        lambda name: (
+            name not in excluded
+            and ROS_TOKEN.fullmatch(name) is not None
+            and not name.startswith("zz_")
+        )
+    )
 
 
 int64s = st.one_of(st.integers(INT64_MIN, INT64_MAX), st.sampled_from([INT64_MIN, INT64_MAX, 0]))
@@ -335,6 +341,12 @@ class SchemaCase:
     values: dict[str, Any] = field(default_factory=dict)  # dotted ROS name -> typed value
     types: dict[str, str] = field(default_factory=dict)
     required: set[str] = field(default_factory=set)
+    entries: set[str] = field(default_factory=set)  # names of mapped entries' parameters
+    paths: dict[str, tuple[str, ...]] = field(default_factory=dict)  # where cfg holds a value
+
+    def path(self, name: str) -> tuple[str, ...]:
+        """The attribute path of ``name`` in the typed view (an entry's key stays as it is)."""
+        return self.paths.get(name) or tuple(python_attribute(p) for p in name.split("."))
 
 
 @st.composite
@@ -362,6 +374,82 @@ def namespace(
     return out
 
 
+# The mapped group and its key list: names() never draws a name starting "zz_".
+MAP_KEYS = "zz_keys"
+MAPPED = "zz_entries"
+ENTRY_KEYS = st.lists(
+    st.from_regex(r"[A-Za-z0-9_-]{1,10}", fullmatch=True), max_size=4, unique=True
+)
+RULE_WORDS = frozenset({"abs", "len", "min", "max", "true", "false", "and", "or", "not", "if"})
+RULE_OPERATORS = {
+    "<=": lambda a, b: a <= b,
+    ">=": lambda a, b: a >= b,
+    "<": lambda a, b: a < b,
+    ">": lambda a, b: a > b,
+    "==": lambda a, b: a == b,
+    "!=": lambda a, b: a != b,
+}
+
+
+@st.composite
+def mapped_group(draw: st.DrawFn, case: SchemaCase) -> dict[str, Any]:
+    """A top-level mapped group over a key list: one entry per key, leaves with defaults."""
+    keys = draw(ENTRY_KEYS)
+    case.values[MAP_KEYS] = tuple(keys)
+    case.types[MAP_KEYS] = "string_array"
+    leaves_by_name = {
+        leaf_name: draw(leaves().filter(lambda leaf: not leaf.required))
+        for leaf_name in draw(
+            st.lists(names(top_level=False), min_size=1, max_size=3, unique_by=python_attribute)
+        )
+    }
+    for key in keys:
+        for leaf_name, leaf in leaves_by_name.items():
+            ros_name = f"{MAPPED}.{key}.{leaf_name}"
+            case.values[ros_name] = leaf.value
+            case.types[ros_name] = leaf.type
+            case.entries.add(ros_name)
+            case.paths[ros_name] = (MAPPED, key, python_attribute(leaf_name))
+    group: dict[str, Any] = {"for_each": MAP_KEYS}
+    group.update({leaf_name: leaf.body for leaf_name, leaf in leaves_by_name.items()})
+    return group
+
+
+def _rule_operand(case: SchemaCase, name: str) -> bool:
+    value = case.values[name]
+    return (
+        name not in case.required
+        and name not in case.entries
+        and case.types[name] in ("int", "double")
+        and not (isinstance(value, float) and not math.isfinite(value))
+        and not any(keyword.iskeyword(p) or p in RULE_WORDS for p in name.split("."))
+    )
+
+
+def _rule_name(name: str) -> str:
+    """How a rule refers to a parameter: keywords take a trailing underscore."""
+    return ".".join(python_attribute(part) for part in name.split("."))
+
+
+@st.composite
+def rules(draw: st.DrawFn, case: SchemaCase) -> list[dict[str, Any]]:
+    """Rules over numeric parameters that their values satisfy."""
+    operands = sorted(name for name in case.values if _rule_operand(case, name))
+    if not operands:
+        return []
+    out = []
+    for index in range(draw(st.integers(0, 3))):
+        left, right = draw(st.sampled_from(operands)), draw(st.sampled_from(operands))
+        a, b = case.values[left], case.values[right]
+        holding = [op for op, holds in RULE_OPERATORS.items() if holds(a, b)]
+        op = draw(st.sampled_from(holding))
+        check = f"{_rule_name(left)} {op} {_rule_name(right)}"
+        if draw(st.booleans()):
+            check = f"abs({_rule_name(left)}) >= 0 and {check}"
+        out.append({"name": f"rule_{index}", "check": check})
+    return out
+
+
 @st.composite
 def schemas(draw: st.DrawFn) -> SchemaCase:
     name = draw(st.from_regex(r"[a-z][a-z0-9_]{0,20}", fullmatch=True))
@@ -370,6 +458,15 @@ def schemas(draw: st.DrawFn) -> SchemaCase:
     if draw(st.booleans()):
         document["description"] = draw(texts(80))
     document["parameters"] = draw(namespace(case, (), 0))
+    if draw(st.integers(0, 2)) == 0:
+        document["parameters"][MAPPED] = draw(mapped_group(case))
+        document["parameters"][MAP_KEYS] = {
+            "type": "string_array",
+            "default": list(case.values[MAP_KEYS]),
+        }
+    drawn_rules = draw(rules(case))
+    if drawn_rules:
+        document["rules"] = drawn_rules
     case.document = document
     case.text = block(document, quote_keys=draw(st.booleans()))
     return case

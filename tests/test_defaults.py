@@ -59,6 +59,45 @@ def test_defaults_file_round_trips_through_a_node(
         ), parameter.ros_name
 
 
+@pytest.mark.parametrize(
+    ("parameters", "given", "expected"),
+    [
+        ("  a: {type: bool, read_only: true}\n", {"a": "true"}, {"a": True}),
+        (
+            "  b: {type: int, default: 1}\n  ns:\n    a: {type: bool}\n"
+            "    deeper: {c: {type: string}}\n  keys: {type: string_array}\n"
+            "  entries: {for_each: keys, x: {type: int, default: 2}}\n",
+            {"ns.a": "true", "ns.deeper.c": "x", "keys": "[k]"},
+            {
+                "b": 1,
+                "ns": {"a": True, "deeper": {"c": "x"}},
+                "keys": ("k",),
+                "entries": {"k": {"x": 2}},
+            },
+        ),
+    ],
+    ids=["every parameter required", "a namespace of required parameters"],
+)
+def test_defaults_file_with_nothing_to_write_in_a_section_still_loads(
+    parameters: str,
+    given: dict[str, str],
+    expected: dict[str, object],
+    ros: RosHarness,
+    tmp_path: Path,
+) -> None:
+    """rcl refuses a section or namespace with no value under it: those are commented out."""
+    schema_path = tmp_path / "sparse.yaml"
+    schema_path.write_text("genparams: 1\nname: sparse\nparameters:\n" + parameters)
+    params_file = tmp_path / "defaults.yaml"
+    assert main(["defaults", str(schema_path), "-o", str(params_file)]) == 0
+    args = ["--params-file", str(params_file)]
+    for name, value in given.items():
+        args += ["-p", f"{name}:={value}"]
+    node = ros.node(args=args)  # rcl parses the file here, or the node cannot be created
+    cfg = load_generated(schema_path, tmp_path).SparseParams.declare(node)
+    assert cfg.to_dict() == expected
+
+
 def test_node_section_and_wildcard(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["defaults", str(EXAMPLE_SCHEMA)]) == 0
     out = capsys.readouterr().out

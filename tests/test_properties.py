@@ -12,15 +12,23 @@ import types
 from pathlib import Path
 from typing import Any
 
+import jsonschema
+import yaml
 from hypothesis import given, settings
 from rclpy.parameter import Parameter
 
 import genparams
+from genparams.check_params import check_params
+from genparams.docs_model import FORMATS, docs_page
+from genparams.json_schema import params_file_schema
+from genparams.params_file import default_params_file
+from genparams.params_reader import read_params_file
+from genparams.render import render_docs, render_params_file
 from genparams.runtime.tree import get_path
 from tests.budget import examples
 from tests.golden import ROOT
 from tests.readback import mismatches, params_class, read_back, same
-from tests.strategies import SchemaCase, python_attribute, schemas
+from tests.strategies import SchemaCase, schemas
 from tests.support import RosHarness, import_file, unique_name
 
 ROS_TYPES = {
@@ -62,8 +70,7 @@ def test_generated_module_holds_every_default(case: SchemaCase) -> None:
         cls = params_class(import_case(case, Path(folder)))
     snapshot = cls.defaults(overrides(case))
     for name, expected in case.values.items():
-        path = tuple(python_attribute(part) for part in name.split("."))
-        assert same(get_path(snapshot, path), expected), name
+        assert same(get_path(snapshot, case.path(name)), expected), name
 
 
 @settings(max_examples=examples(25))
@@ -83,6 +90,28 @@ def test_declared_values_read_back_through_cfg_node_and_service(
         assert mismatches(read_back(ros_harness, node, cfg), case.values) == {}
     finally:
         ros_harness.destroy_test_nodes()
+
+
+@settings(max_examples=examples(40))
+@given(case=schemas())
+def test_docs_defaults_file_and_json_schema_agree(case: SchemaCase) -> None:
+    """Docs render; the defaults file passes the JSON Schema and check-params.
+
+    Required parameters have no default, so the file leaves them out: they are
+    the only thing either check may report.
+    """
+    schema = genparams.load_schema(f"{case.name}.yaml", case.text)
+    for format in FORMATS:
+        assert render_docs(docs_page(schema), format).strip()
+    text = render_params_file(default_params_file(schema))
+    validator = jsonschema.Draft202012Validator(params_file_schema(schema))
+    errors = list(validator.iter_errors(yaml.safe_load(text)))
+    if case.required:  # reported as "required", or "anyOf" (nested or dotted) below the top
+        assert errors and {e.validator for e in errors} <= {"required", "anyOf"}, errors
+    else:
+        assert errors == []
+    report = check_params(schema, read_params_file(text, "defaults.yaml"))
+    assert {p.key for p in report.problems} == set(case.required), report.problems
 
 
 def test_generated_modules_pass_mypy_strict_and_ruff(tmp_path: Path) -> None:
