@@ -78,13 +78,19 @@ def test_generated_module_holds_every_default(case: SchemaCase) -> None:
 def test_declared_values_read_back_through_cfg_node_and_service(
     ros_harness: RosHarness, case: SchemaCase
 ) -> None:
+    """The schema's default params file is loaded too (--params-file): it changes nothing."""
     with tempfile.TemporaryDirectory() as folder:
         cls = params_class(import_case(case, Path(folder)))
-    given_values = [
-        Parameter(name, ROS_TYPES[case.types[name]], ros_value(case.types[name], value))
-        for name, value in overrides(case).items()
-    ]
-    node = ros_harness.node(parameter_overrides=given_values)
+        defaults_file = Path(folder) / "defaults.yaml"
+        schema = genparams.load_schema(f"{case.name}.yaml", case.text)
+        defaults_file.write_text(render_params_file(default_params_file(schema)), "utf-8")
+        given_values = [
+            Parameter(name, ROS_TYPES[case.types[name]], ros_value(case.types[name], value))
+            for name, value in overrides(case).items()
+        ]
+        node = ros_harness.node(
+            args=["--params-file", str(defaults_file)], parameter_overrides=given_values
+        )
     try:
         cfg = cls.declare(node)
         assert mismatches(read_back(ros_harness, node, cfg), case.values) == {}
