@@ -49,6 +49,11 @@ parameters:
     mask: {type: byte_array, default: [1, 2], validators: [{length: {max: 4}}]}
     flags: {type: bool_array, default: [true]}
   offset: {type: int, default: 0, validators: [{bounds: [-100, 100]}]}
+rules:
+  - name: gain_within_fps
+    check: gain * 10 <= fps
+  - name: one_weight_per_id
+    check: len(io.weights) == len(io.ids)
 """
 
 T = Parameter.Type
@@ -102,6 +107,17 @@ MODEL: dict[str, Rule] = {
     "io.flags": Rule(T.BOOL_ARRAY, lambda v: True, (True,)),
     "offset": Rule(T.INTEGER, lambda v: -100 <= v <= 100, 0),
 }
+
+# The schema's rules, restated over the model's state (ROS name -> value).
+CROSS_RULES: dict[str, Callable[[dict[str, Any]], bool]] = {
+    "gain_within_fps": lambda s: s["gain"] * 10 <= s["fps"],
+    "one_weight_per_id": lambda s: len(s["io.weights"]) == len(s["io.ids"]),
+}
+
+
+def rules_hold(state: dict[str, Any]) -> bool:
+    return all(holds(state) for holds in CROSS_RULES.values())
+
 
 text = st.text(st.characters(exclude_categories=("Cs",), exclude_characters="\x00"), max_size=14)
 doubles = st.one_of(
@@ -190,6 +206,7 @@ assignments = st.sampled_from(sorted(MODEL)).flatmap(_assignment)
 class ParameterServiceMachine(RuleBasedStateMachine):
     harness: ClassVar[RosHarness]
     params_cls: ClassVar[type[Params]]
+    refused_by_rules: ClassVar[set[str]] = set()  # rule names seen in rejections
 
     def __init__(self) -> None:
         super().__init__()
@@ -200,19 +217,40 @@ class ParameterServiceMachine(RuleBasedStateMachine):
 
     @rule(sets=st.lists(assignments, min_size=1, max_size=4))
     def set_one_by_one(self, sets: list[Assignment]) -> None:
+        """Each is its own change, checked against the state the ones before it left."""
         results = self.client.set(*(a.parameter() for a in sets))
         for assignment, result in zip(sets, results, strict=True):
-            assert result.successful == assignment.accepted_by_model(), (assignment, result)
+            proposed = self.state | {assignment.name: assignment.value}
+            expected = assignment.accepted_by_model() and rules_hold(proposed)
+            assert result.successful == expected, (assignment, result)
+            self.note_rules(result.reason)
             if result.successful:
-                self.state[assignment.name] = assignment.value
+                self.state = proposed
 
     @rule(sets=st.lists(assignments, min_size=1, max_size=4))
     def set_atomically(self, sets: list[Assignment]) -> None:
+        """All or nothing: the rules are checked on the state with every value applied."""
         result = self.client.set_atomically(*(a.parameter() for a in sets))
-        assert result.successful == all(a.accepted_by_model() for a in sets), (sets, result)
+        proposed = self.state | {a.name: a.value for a in sets}
+        expected = all(a.accepted_by_model() for a in sets) and rules_hold(proposed)
+        assert result.successful == expected, (sets, result)
+        self.note_rules(result.reason)
         if result.successful:
-            for assignment in sets:
-                self.state[assignment.name] = assignment.value
+            self.state = proposed
+
+    def note_rules(self, reason: str) -> None:
+        self.refused_by_rules.update(name for name in CROSS_RULES if f"rule '{name}'" in reason)
+
+    @rule(count=st.integers(1, 4), fps=st.sampled_from([30.0, 60.0, 120.0]))
+    def fix_two_values_together(self, count: int, fps: float) -> None:
+        """The way out of a rule: change the values it links in one atomic set."""
+        weights = Assignment("io.weights", T.DOUBLE_ARRAY, (0.25,) * count)
+        ids = Assignment("io.ids", T.INTEGER_ARRAY, tuple(range(1, count + 1)))
+        gain = Assignment("gain", T.DOUBLE, fps / 20)
+        fps_set = Assignment("fps", T.DOUBLE, fps)
+        result = self.client.set_atomically(*(a.parameter() for a in (weights, ids, gain, fps_set)))
+        assert result.successful, result.reason
+        self.state |= {a.name: a.value for a in (weights, ids, gain, fps_set)}
 
     @invariant()
     def node_cfg_and_service_agree_with_the_model(self) -> None:
@@ -220,6 +258,8 @@ class ParameterServiceMachine(RuleBasedStateMachine):
         assert mismatches(seen, self.state) == {}
         for name, values in seen.items():
             assert all(MODEL[name].holds(value) for value in values), (name, values)
+        assert rules_hold({name: values[0] for name, values in seen.items()})
+        assert rules_hold({name: values[1] for name, values in seen.items()})
 
     def teardown(self) -> None:
         self.harness.destroy_test_nodes()
@@ -237,6 +277,7 @@ def test_model_defaults_match_the_schema(stateful_class: type[Params]) -> None:
     snapshot = stateful_class.defaults()
     assert snapshot.to_dict()["io"]["mask"] == MODEL["io.mask"].default
     assert all(rule.holds(rule.default) for rule in MODEL.values())
+    assert rules_hold({name: rule.default for name, rule in MODEL.items()})
 
 
 def test_sets_through_services_follow_the_model(
@@ -248,3 +289,4 @@ def test_sets_through_services_follow_the_model(
         ParameterServiceMachine,
         settings=settings(max_examples=examples(15), stateful_step_count=10),
     )
+    assert ParameterServiceMachine.refused_by_rules == set(CROSS_RULES)  # rules were exercised
