@@ -51,7 +51,7 @@ def check_maps(
                 f"for_each names {target!r}, which is of type {param.type.name}; "
                 "it must name a string_array parameter",
             )
-        elif not param.required:
+        elif param.default is not None:  # None: required, or a bad default already reported
             reason = naming.entry_key_problem(param.default, group.ros_name)
             if reason is not None:
                 report((*leaf_paths[target], "default"), f"default violates for_each: {reason}")

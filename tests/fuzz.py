@@ -23,7 +23,7 @@ import time
 from collections.abc import Callable
 from typing import Any
 
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, Phase, given, settings
 from hypothesis import strategies as st
 
 from genparams.api import load_schema
@@ -162,7 +162,11 @@ TARGETS: dict[str, st.SearchStrategy[str]] = {
 
 
 def run_for(strategy: st.SearchStrategy[str], seconds: float, chunk: int = 25) -> int:
-    """Run ``check`` over fresh examples until ``seconds`` pass; returns how many ran."""
+    """Run ``check`` over fresh examples until ``seconds`` pass; returns how many ran.
+
+    A failing input is reported as found, not shrunk: shrinking a text can take
+    longer than the whole budget (minutes), and the input is printed in full.
+    """
     deadline = time.monotonic() + seconds
     count = 0
 
@@ -170,6 +174,7 @@ def run_for(strategy: st.SearchStrategy[str], seconds: float, chunk: int = 25) -
         max_examples=chunk,
         deadline=None,
         database=None,
+        phases=(Phase.explicit, Phase.generate),
         suppress_health_check=list(HealthCheck),
     )
     @given(text=strategy)

@@ -61,6 +61,11 @@ FOUND = {
         '  x: {type: int, default: 1, description: "a\\0b"}\n',
         "cannot contain NUL",
     ),
+    "for_each over a string_array whose default is not a list": (
+        "  keys: {type: string_array, default: {a: 1}}\n"
+        "  arms:\n    for_each: keys\n    gain: {type: double, default: 1.0}\n",
+        "default does not match type",
+    ),
     "flow nesting 100000 deep (segfault in libyaml's composer)": (
         "  x: " + "[" * 100_000 + "]" * 100_000 + "\n",
         "nested deeper than 64 levels",
