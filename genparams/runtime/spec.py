@@ -104,7 +104,8 @@ class CompiledParam:
 
     @property
     def constraints_text(self) -> str:
-        parts = [c.describe() for c in self.checks if c is not self.ros_range]
+        ros_range = self.ros_range
+        parts = [c.describe() for c in self.checks if c is not ros_range]
         if self.spec.additional_constraints:
             parts.append(self.spec.additional_constraints)
         return "; ".join(parts)
@@ -138,7 +139,7 @@ def compile_param(spec: ParamSpec, extra_checks: tuple[Validator, ...] = ()) -> 
     return CompiledParam(
         spec=spec,
         type=param_type,
-        attribute_path=tuple(attribute_name(part) for part in spec.name.split(".")),
+        attribute_path=tuple(map(attribute_name, spec.name.split("."))),
         checks=tuple(checks),
     )
 

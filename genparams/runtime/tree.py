@@ -8,7 +8,7 @@ shared mutable state) and one set costs O(depth x group width), not O(N).
 from __future__ import annotations
 
 from collections.abc import Callable, Collection, Iterable, Iterator, Mapping
-from typing import Any, TypeVar
+from typing import Any, TypeGuard, TypeVar, cast, final
 
 from genparams.naming import ENTRY_KEY, attribute_name
 
@@ -44,6 +44,7 @@ class Group:
 G = TypeVar("G", bound=Group)
 
 
+@final
 class GroupMap(Mapping[str, G]):
     """The entries of a mapped group (``for_each``), by key: a read-only value like a group.
 
@@ -71,6 +72,12 @@ class GroupMap(Mapping[str, G]):
 
     def __repr__(self) -> str:
         return f"GroupMap({self._entries!r})"
+
+
+def _is_map(node: object) -> TypeGuard[GroupMap[Any]]:
+    """Exact type test: ``isinstance`` against a Mapping goes through the ABC
+    machinery, a few hundred ns per test and several tests per set."""
+    return type(node) is GroupMap
 
 
 _FIELDS: dict[type[Group], tuple[str, ...]] = {}
@@ -158,8 +165,8 @@ def _slot(cls: type[Group], name: str) -> Any:
 
 
 def copy_node(node: G, extra: Iterable[str] = ()) -> G:
-    if isinstance(node, GroupMap):
-        return GroupMap(node._entries)
+    if _is_map(node):  # entries of a mapped group stand where groups do
+        return cast(G, GroupMap(node._entries))
     cls = type(node)
     extra = tuple(extra)
     copier = _COPIERS.get((cls, extra) if extra else cls) or _copier(cls, extra)
@@ -186,7 +193,7 @@ def replace_values(root: G, updates: Mapping[tuple[str, ...], Any], extra: Itera
         object.__setattr__(new, name, value)
     for name, sub_updates in by_head.items():
         child = replace_values(_child(root, name), sub_updates)
-        if isinstance(new, GroupMap):
+        if _is_map(new):
             new._entries[name] = child  # the copy is not shared yet
         else:
             object.__setattr__(new, name, child)
@@ -194,7 +201,7 @@ def replace_values(root: G, updates: Mapping[tuple[str, ...], Any], extra: Itera
 
 
 def _child(node: Any, name: str) -> Any:
-    return node[name] if isinstance(node, GroupMap) else getattr(node, name)
+    return node[name] if _is_map(node) else getattr(node, name)
 
 
 def _replace_one(root: G, path: tuple[str, ...], value: Any, extra: tuple[str, ...]) -> G:
@@ -203,7 +210,7 @@ def _replace_one(root: G, path: tuple[str, ...], value: Any, extra: tuple[str, .
         chain.append(_child(chain[-1], name))
     for depth in range(len(path) - 1, -1, -1):
         new = copy_node(chain[depth], extra if depth == 0 else ())
-        if isinstance(new, GroupMap):
+        if _is_map(new):
             new._entries[path[depth]] = value  # the copy is not shared yet
         else:
             object.__setattr__(new, path[depth], value)
