@@ -241,6 +241,26 @@ class ParameterServiceMachine(RuleBasedStateMachine):
     def note_rules(self, reason: str) -> None:
         self.refused_by_rules.update(name for name in CROSS_RULES if f"rule '{name}'" in reason)
 
+    @rule(broken=st.sampled_from(sorted(CROSS_RULES)))
+    def break_a_rule(self, broken: str) -> None:
+        """Values that each pass their own validators but together break one rule.
+
+        Random sets reach a rule only by chance; this step makes sure every rule
+        is seen refusing in every run.
+        """
+        if broken == "gain_within_fps":
+            sets = [Assignment("gain", T.DOUBLE, 5.0), Assignment("fps", T.DOUBLE, 30.0)]
+        else:
+            count = len(self.state["io.ids"]) % 4 + 1  # any length but the ids' own
+            sets = [Assignment("io.weights", T.DOUBLE_ARRAY, (0.5,) * count)]
+        assert all(a.accepted_by_model() for a in sets)
+        proposed = self.state | {a.name: a.value for a in sets}
+        assert not CROSS_RULES[broken](proposed)
+        result = self.client.set_atomically(*(a.parameter() for a in sets))
+        assert not result.successful
+        assert f"rule '{broken}'" in result.reason, result.reason
+        self.note_rules(result.reason)
+
     @rule(count=st.integers(1, 4), fps=st.sampled_from([30.0, 60.0, 120.0]))
     def fix_two_values_together(self, count: int, fps: float) -> None:
         """The way out of a rule: change the values it links in one atomic set."""
