@@ -4,16 +4,22 @@ from __future__ import annotations
 
 import gc
 import sys
+import threading
 import types
 import uuid
 from pathlib import Path
+from typing import Any
 
 import pytest
 from rcl_interfaces.msg import SetParametersResult
+from rclpy.exceptions import ParameterNotDeclaredException
+from rclpy.node import Node
 from rclpy.parameter import Parameter
 
 import genparams
 from genparams.runtime import Changes, GroupMap, ParameterDeclarationError
+from genparams.runtime.consistency import parameter_set_lock
+from genparams.runtime.rewrites import add_rewrite
 from tests.support import ROOT, RosHarness, ServiceClient, load_generated
 
 ARM = """\
@@ -386,3 +392,99 @@ def test_required_leaf_of_a_new_entry_must_come_from_an_override(
     )
     assert client.set(Parameter("names", value=["drill"]))[0].successful
     assert cfg.tool["drill"].serial == "D1"
+
+
+def _entries_agree(node: Node, cfg: Any) -> None:
+    """Every entry the view holds is declared on the node, and no other entry is."""
+    on_node = sorted(n for n in node._parameters if n.startswith("gains."))
+    in_view = sorted(
+        f"gains.{joint}.{leaf}"
+        for joint in cfg.gains
+        for leaf in ("i", "limits.max", "offset", "p", "tips.thumb.force")
+    )
+    assert on_node == in_view
+
+
+def test_undeclared_entry_is_refused_where_undeclared_parameters_are_allowed(
+    ros: RosHarness, arm: types.ModuleType
+) -> None:
+    node = ros.node(allow_undeclared_parameters=True)
+    cfg = arm.ArmParams.declare(node)
+    client = ros.client(node)
+    (result,) = client.set(Parameter("gains.wrist.p", value=2.0))
+    assert _reason(result) == "gains.wrist.p: no such entry: its key is not in the key list"
+    assert not node.has_parameter("gains.wrist.p")
+    # The key can still be added: no stray parameter holds its entry's name.
+    assert client.set(Parameter("joints", value=["shoulder", "wrist"]))[0].successful
+    assert cfg.gains["wrist"].p == 1.0 and client.get("gains.wrist.p") == [1.0]
+    # Other undeclared names are still the node's business.
+    assert client.set(Parameter("free_form", value=1))[0].successful
+    _entries_agree(node, cfg)
+
+
+def test_set_of_an_entry_racing_its_removal_leaves_no_stray(
+    ros: RosHarness, arm: types.ModuleType
+) -> None:
+    """rclpy checks that a parameter is declared before a set takes the node's set lock."""
+    node = ros.node()
+    cfg = arm.ArmParams.declare(node)
+    checked = threading.Event()
+
+    def signal(parameters: list[Parameter]) -> list[Parameter]:
+        if threading.current_thread() is not threading.main_thread():
+            checked.set()
+        return parameters
+
+    add_rewrite(node, signal)
+    outcome: list[object] = []
+
+    def set_elbow() -> None:
+        try:
+            outcome.append(node.set_parameters([Parameter("gains.elbow.p", value=2.0)])[0])
+        except ParameterNotDeclaredException as exc:
+            outcome.append(exc)
+
+    with parameter_set_lock(node):  # the set below waits here, its declared-check done or near
+        racer = threading.Thread(target=set_elbow)
+        racer.start()
+        assert checked.wait(10.0)
+        assert node.set_parameters([Parameter("joints", value=["shoulder"])])[0].successful
+    racer.join(10.0)
+    (result,) = outcome
+    if isinstance(result, SetParametersResult):  # it passed the check before the removal
+        assert _reason(result) == "gains.elbow.p: no such entry: its key is not in the key list"
+    assert not node.has_parameter("gains.elbow.p") and list(cfg.gains) == ["shoulder"]
+    assert node.set_parameters([Parameter("joints", value=["shoulder", "elbow"])])[0].successful
+    assert cfg.gains["elbow"].p == 1.0
+    _entries_agree(node, cfg)
+
+
+def test_a_callback_refusing_the_entries_refuses_the_change_of_keys(
+    ros: RosHarness, arm: types.ModuleType
+) -> None:
+    """Another on-set callback sees the entries' declarations and undeclarations in the
+    on-set round, so its veto refuses the key change instead of splitting keys and entries."""
+    node = ros.node()
+    cfg = arm.ArmParams.declare(node)
+
+    def guard(parameters: list[Parameter]) -> SetParametersResult:
+        for parameter in parameters:
+            if parameter.type_ == Parameter.Type.NOT_SET:
+                return SetParametersResult(successful=False, reason="nothing is undeclared here")
+            if parameter.name.startswith("gains.wrist."):
+                return SetParametersResult(successful=False, reason="no wrist on this arm")
+        return SetParametersResult(successful=True)
+
+    node.add_on_set_parameters_callback(guard)
+    client = ros.client(node)
+    (result,) = client.set(Parameter("joints", value=["shoulder"]))
+    assert _reason(result) == "joints: the new entries were refused: nothing is undeclared here"
+    (result,) = client.set(Parameter("joints", value=["shoulder", "elbow", "wrist"]))
+    assert _reason(result) == "joints: the new entries were refused: no wrist on this arm"
+    assert cfg.joints == ("shoulder", "elbow") and list(cfg.gains) == ["shoulder", "elbow"]
+    assert client.get("joints") == [["shoulder", "elbow"]]
+    _entries_agree(node, cfg)
+    # A change the callback accepts goes through, entries and all.
+    assert client.set(Parameter("joints", value=["shoulder", "elbow", "hand"]))[0].successful
+    assert list(cfg.gains) == ["shoulder", "elbow", "hand"]
+    _entries_agree(node, cfg)

@@ -7,6 +7,17 @@ new items are checked in the on-set round (a bad override for one of them
 rejects the change), then declared, and the entries of removed items
 undeclared, from the post-set callback; the typed view moves to the new shape
 in one commit, so no snapshot ever sees keys and entries disagree.
+
+Two on-set checks keep node and view in step around that:
+
+- The new entries and the removals are shown to every other on-set callback of
+  the node in the on-set round, so a callback that would refuse them refuses
+  the change of keys instead of leaving keys without entries.
+- A set of an entry that is not declared is refused. rclpy checks that a
+  parameter is declared before it takes the set lock: a set of an entry racing
+  a change of keys that removes it, or any set on a node that allows
+  undeclared parameters, would otherwise store it as a stray parameter
+  that blocks the key from ever coming back.
 """
 
 from __future__ import annotations
@@ -18,7 +29,7 @@ from typing import TYPE_CHECKING, Any
 from rcl_interfaces.msg import SetParametersResult
 from rclpy.parameter import Parameter
 
-from genparams.naming import join_prefix
+from genparams.naming import ENTRY_KEY, join_prefix
 from genparams.runtime.changes import Change
 from genparams.runtime.declaring import descriptor_for, replace_batch, ros_parameter
 from genparams.runtime.deprecation import Notices
@@ -51,6 +62,8 @@ class MappedEntries:
         self.entries = dict(entries)  # relative name -> parameter, in key order
         self.key_names = frozenset(compiled.maps.values())  # relative names of key parameters
         self.keys_by_full_name = {self.full_name(k): k for k in self.key_names}
+        self.template_parts = tuple(tuple(name.split(".")) for name in compiled.templates)
+        self.replacing = False  # True while this binding declares and undeclares its entries
 
     @classmethod
     def attach(
@@ -72,6 +85,15 @@ class MappedEntries:
 
     def on_set(self, parameters: Sequence[Parameter]) -> SetParametersResult:
         """Reject a change of keys whose new entries cannot be declared (bad override, ...)."""
+        if not self.replacing:
+            strays = [p.name for p in parameters if self.is_undeclared_entry(p.name)]
+            if strays:
+                return SetParametersResult(
+                    successful=False,
+                    reason="; ".join(
+                        f"{name}: no such entry: its key is not in the key list" for name in strays
+                    ),
+                )
         proposed: dict[str, Any] = {}
         for parameter in parameters:
             key_name = self.keys_by_full_name.get(parameter.name)
@@ -94,17 +116,61 @@ class MappedEntries:
         expanded = expand(self.compiled, values, self.entries)
         added = {n: p for n, p in expanded.items() if n not in self.entries}
         reader = OverrideReader(self.binding.node, self.full_name)
-        _, problems = resolve_values(
+        new_values, problems = resolve_values(
             self.compiled, reader.read(added), self.full_name, parameters=added
         )
         problems[:0] = reader.problems
-        if not problems:
-            return _ACCEPTED
         changed = ", ".join(self.full_name(name) for name in proposed)
+        if problems:
+            return SetParametersResult(
+                successful=False,
+                reason=f"{changed}: cannot declare the new entries: " + "; ".join(problems),
+            )
+        removed = [name for name in self.entries if name not in expanded]
+        refusal = self._refusal_of_others(added, new_values, removed)
+        if refusal is None:
+            return _ACCEPTED
         return SetParametersResult(
-            successful=False,
-            reason=f"{changed}: cannot declare the new entries: " + "; ".join(problems),
+            successful=False, reason=f"{changed}: the new entries were refused: {refusal}"
         )
+
+    def is_undeclared_entry(self, full_name: str) -> bool:
+        """``full_name`` has the shape of an entry of this binding but is not declared."""
+        if full_name in self.binding.owned:
+            return False
+        prefix = self.binding.prefix
+        if prefix:
+            if not full_name.startswith(prefix + "."):
+                return False
+            full_name = full_name[len(prefix) + 1 :]
+        parts = full_name.split(".")
+        shaped = any(
+            len(parts) == len(template)
+            and all(t == ENTRY_KEY or t == part for t, part in zip(template, parts, strict=True))
+            for template in self.template_parts
+        )
+        return shaped and not self.binding.node.has_parameter(self.full_name(full_name))
+
+    def _refusal_of_others(
+        self,
+        added: Mapping[str, CompiledParam],
+        values: Mapping[str, Any],
+        removed: Sequence[str],
+    ) -> str | None:
+        """What another on-set callback of the node says to the entries' declaration round."""
+        node = self.binding.node
+        batch = [ros_parameter(p, self.full_name(n), values[n]) for n, p in added.items()]
+        batch.extend(Parameter(self.full_name(name)) for name in removed)
+        if not batch:
+            return None
+        ours = (self.on_set, self.binding.on_set)  # they pass the round itself by design
+        for callback in tuple(node._on_set_parameters_callbacks):
+            if callback in ours:
+                continue
+            result = callback(batch)
+            if isinstance(result, SetParametersResult) and not result.successful:
+                return str(result.reason)
+        return None
 
     def reshape(self, updates: Mapping[CompiledParam, Any]) -> None:
         """Commit a change of keys: declare new entries, undeclare removed ones, one commit."""
@@ -168,9 +234,13 @@ class MappedEntries:
                 (ros_parameter(param, full_name, values[name]), descriptor_for(param, full_name))
             )
         reader.release_predeclared()
-        result = replace_batch(
-            self.binding.node, declarations, [self.full_name(n) for n in removed]
-        )
+        self.replacing = True
+        try:
+            result = replace_batch(
+                self.binding.node, declarations, [self.full_name(n) for n in removed]
+            )
+        finally:
+            self.replacing = False
         if not result.successful:
             for name, param in dropped.items():
                 owned[self.full_name(name)] = param
