@@ -18,6 +18,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from rclpy.exceptions import ParameterNotDeclaredException
 from rclpy.executors import MultiThreadedExecutor
 from rclpy.node import Node
 from rclpy.parameter import Parameter
@@ -245,6 +246,125 @@ def test_concurrent_sets_stay_consistent(
         assert node_values(node) == final
         assert final == flat(deliveries[-1].after)
         assert elapsed < 30.0
+    finally:
+        executor.shutdown()
+        node.destroy_node()
+        client_node.destroy_node()
+
+
+MAPPED = """\
+genparams: 1
+name: mapped_stress
+parameters:
+  joints: {type: string_array, default: [j0, j1]}
+  gains:
+    for_each: joints
+    p: {type: double, default: 1.0, validators: [{ge: 0.0}]}
+"""
+KEY_POOL = ("j0", "j1", "j2", "j3", "j4")
+
+
+def mapped_state(node: Node) -> tuple[tuple[str, ...], dict[str, float]]:
+    joints = tuple(node.get_parameter("joints").value)
+    names = node.list_parameters(["gains"], 0).names
+    return joints, {name: node.get_parameter(name).value for name in names}
+
+
+def mapped_view(snapshot: Any) -> tuple[tuple[str, ...], dict[str, float]]:
+    return snapshot.joints, {f"gains.{key}.p": entry.p for key, entry in snapshot.gains.items()}
+
+
+def test_concurrent_key_changes_and_entry_sets_keep_entries_in_step(
+    ros: RosHarness, tmp_path: Path, fast_switching: None
+) -> None:
+    """Threads change the key list and set entries at once: the entries on the node are
+    always exactly those of the view's keys, with the view's values."""
+    schema = tmp_path / "mapped_stress.yaml"
+    schema.write_text(MAPPED)
+    module = load_generated(schema, tmp_path)
+    executor = MultiThreadedExecutor(num_threads=4, context=ros.context)
+    node = Node(unique_name("mapped_stress"), context=ros.context)
+    client_node = Node(unique_name("mapped_stress_client"), context=ros.context)
+    executor.add_node(node)
+    executor.add_node(client_node)
+    spinner = threading.Thread(target=executor.spin, daemon=True)
+    spinner.start()
+    try:
+        cfg = module.MappedStressParams.declare(node)
+        service = AsyncParameterClient(client_node, node.get_fully_qualified_name())
+        assert service.wait_for_services(timeout_sec=10.0)
+        failures: list[str] = []
+        outcomes = {"accepted": 0, "refused": 0, "undeclared": 0}
+        record = threading.Lock()
+        stop = threading.Event()
+
+        def count(outcome: str) -> None:
+            with record:
+                outcomes[outcome] += 1
+
+        def through_service(parameters: list[Parameter]) -> bool:
+            done = threading.Event()
+            future = service.set_parameters(parameters)
+            future.add_done_callback(lambda _: done.set())
+            if not done.wait(10.0):
+                raise TimeoutError("set_parameters through the service timed out")
+            return bool(future.result().results[0].successful)
+
+        def client(index: int) -> None:
+            rng = random.Random(index)
+            try:
+                for _ in range(150):
+                    choice = rng.random()
+                    if choice < 0.3:
+                        keys = rng.sample(KEY_POOL, rng.randrange(0, 4))
+                        parameters = [Parameter("joints", Parameter.Type.STRING_ARRAY, keys)]
+                    elif choice < 0.45:  # keys and an entry that may or may not exist yet
+                        keys = rng.sample(KEY_POOL, rng.randrange(1, 4))
+                        parameters = [
+                            Parameter("joints", Parameter.Type.STRING_ARRAY, keys),
+                            Parameter(f"gains.{keys[0]}.p", value=rng.uniform(-1.0, 5.0)),
+                        ]
+                    else:
+                        name = f"gains.{rng.choice(KEY_POOL)}.p"
+                        parameters = [Parameter(name, value=rng.uniform(-1.0, 5.0))]
+                    try:
+                        if len(parameters) > 1:
+                            ok = node.set_parameters_atomically(parameters).successful
+                        elif rng.random() < 0.3:
+                            ok = through_service(parameters)
+                        else:
+                            ok = node.set_parameters(parameters)[0].successful
+                    except ParameterNotDeclaredException:
+                        count("undeclared")
+                        continue
+                    count("accepted" if ok else "refused")
+            except Exception as exc:  # reported by the main thread
+                failures.append(f"client {index}: {exc!r}")
+
+        def observer() -> None:
+            while not stop.is_set():
+                with parameter_set_lock(node):  # no set in progress: node and view must agree
+                    on_node, in_view = mapped_state(node), mapped_view(cfg.snapshot())
+                if on_node != in_view:
+                    failures.append(f"node and view differ: {on_node} != {in_view}")
+                time.sleep(0.001)
+
+        clients = [threading.Thread(target=client, args=(i,)) for i in range(THREADS)]
+        watcher = threading.Thread(target=observer)
+        watcher.start()
+        for thread in clients:
+            thread.start()
+        for thread in clients:
+            thread.join(timeout=60.0)
+        stop.set()
+        watcher.join(timeout=10.0)
+
+        assert failures == []
+        assert all(count > 20 for count in outcomes.values()), outcomes  # a real mix
+        joints, entries = mapped_state(node)
+        assert (joints, entries) == mapped_view(cfg.snapshot())
+        assert sorted(entries) == sorted(f"gains.{key}.p" for key in joints)
+        assert tuple(cfg.gains) == joints
     finally:
         executor.shutdown()
         node.destroy_node()

@@ -396,7 +396,7 @@ def test_required_leaf_of_a_new_entry_must_come_from_an_override(
 
 def _entries_agree(node: Node, cfg: Any) -> None:
     """Every entry the view holds is declared on the node, and no other entry is."""
-    on_node = sorted(n for n in node._parameters if n.startswith("gains."))
+    on_node = sorted(node.list_parameters(["gains"], 0).names)
     in_view = sorted(
         f"gains.{joint}.{leaf}"
         for joint in cfg.gains
