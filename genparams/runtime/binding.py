@@ -60,6 +60,9 @@ class Binding(Generic[P]):
         self.current: P  # the frozen root: snapshots hand this out
         self.live: P  # the root users hold: top-level attributes follow `current`
         self.mapped: MappedEntries | None = None
+        self.has_rules = False
+        # The last request on_set accepted, with its values converted: (request, values).
+        self.accepted: tuple[Sequence[Parameter], dict[CompiledParam, Any]] | None = None
 
     @classmethod
     def declare(cls, params_cls: type[P], node: Node, prefix: str = "") -> Binding[P]:
@@ -92,6 +95,7 @@ class Binding(Generic[P]):
         report_overrides(notices, parameters, reader.given, reader.renamed, full)
 
         binding: Binding[P] = cls(node, prefix, owned)
+        binding.has_rules = bool(compiled.rules)
         binding.current = build_tree(
             params_cls, spec.groups, values, extra={"_binding": None}, maps=spec.maps
         )
@@ -112,7 +116,7 @@ class Binding(Generic[P]):
 
     def on_set(self, parameters: Sequence[Parameter]) -> SetParametersResult:
         reasons = []
-        proposed: dict[str, Any] = {}
+        typed: dict[CompiledParam, Any] = {}
         for parameter in parameters:
             param = self.owned.get(parameter.name)
             if param is None:
@@ -128,22 +132,30 @@ class Binding(Generic[P]):
             reason = param.check(value)
             if reason is not None:
                 reasons.append(f"{parameter.name}: {reason}")
-            proposed[param.name] = value
-        if not reasons and proposed:
+            typed[param] = value
+        if not reasons and typed and self.has_rules:
+            proposed = {param.name: value for param, value in typed.items()}
             reasons = broken_rules(self.current, proposed, self.full_name)
         if reasons:
             return SetParametersResult(successful=False, reason="; ".join(reasons))
+        # The post-set callback of this very request commits these values as converted
+        # here; holding the request keeps its identity from being reused by another.
+        self.accepted = (parameters, typed)
         return _ACCEPTED
 
     def full_name(self, name: str) -> str:
         return join_prefix(self.prefix, name)
 
     def on_post_set(self, parameters: Sequence[Parameter]) -> None:
-        updates = {}
-        for parameter in parameters:
-            param = self.owned.get(parameter.name)
-            if param is not None:
-                updates[param] = param.type.from_ros(parameter.value)
+        accepted, self.accepted = self.accepted, None
+        if accepted is not None and accepted[0] is parameters:
+            updates = accepted[1]
+        else:  # a request this binding did not check (declarations of mapped entries)
+            updates = {}
+            for parameter in parameters:
+                param = self.owned.get(parameter.name)
+                if param is not None:
+                    updates[param] = param.type.from_ros(parameter.value)
         if self.mapped is not None and self.mapped.changes_keys(updates):
             self.mapped.reshape(updates)
         elif updates:

@@ -66,9 +66,12 @@ def parameter_set_lock(node: Node) -> threading.RLock:
 def _serialize_sets(node: Node, lock: threading.RLock) -> None:
     unlocked = node._set_parameters_atomically_common
 
-    def set_parameters_serialized(*args: Any, **kwargs: Any) -> Any:
+    # rclpy's own signature, spelled out: packing *args and **kwargs costs on every set.
+    def set_parameters_serialized(
+        parameter_list: Any, descriptors: Any = None, allow_not_set_type: bool = False
+    ) -> Any:
         with lock:
-            return unlocked(*args, **kwargs)
+            return unlocked(parameter_list, descriptors, allow_not_set_type)
 
     # An instance attribute shadows the method for this node only.
     node._set_parameters_atomically_common = set_parameters_serialized  # type: ignore[method-assign]

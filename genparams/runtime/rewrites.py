@@ -72,7 +72,10 @@ def typed_empty_arrays(declared: Mapping[str, CompiledParam]) -> Rewrite:
     """
 
     def rewrite(parameters: list[Parameter]) -> list[Parameter]:
-        if not any(_is_empty_array(parameter) for parameter in parameters):
+        for parameter in parameters:  # a plain loop: any() over a generator costs on every set
+            if _is_empty_array(parameter):
+                break
+        else:
             return parameters
         return [
             _retyped(parameter, declared) if _is_empty_array(parameter) else parameter
