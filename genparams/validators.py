@@ -17,6 +17,8 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
+import regex as regex_engine
+
 # rclpy compares doubles against range bounds and steps with this tolerance.
 ROS_RELATIVE_TOLERANCE = 1e-6
 
@@ -231,20 +233,39 @@ class Length:
         return f"length {self._bounds()}"
 
 
+# A pattern like '^(a|aa)+$' backtracks exponentially on some values; a parameter set
+# from any node on the network must not stall the node, nor a schema default the
+# generator. Matching gives up after this long and the value is refused.
+PATTERN_TIMEOUT_S = 0.05
+
+
 @dataclass(frozen=True)
 class Pattern:
+    """Python ``re`` syntax, matched by the ``regex`` module (its V0 mode) with a time limit."""
+
     regex: str
     rule: str = "pattern"
-    _compiled: re.Pattern[str] = field(init=False, repr=False, compare=False)
+    _compiled: regex_engine.Pattern[str] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "_compiled", re.compile(self.regex))
+        re.compile(self.regex)  # the syntax users write, with re's error messages
+        object.__setattr__(
+            self, "_compiled", regex_engine.compile(self.regex, flags=regex_engine.V0)
+        )
 
     def __call__(self, value: Any) -> str | None:
         items = (value,) if isinstance(value, str) else value
         for index, item in enumerate(items):
-            if self._compiled.search(item) is None:
-                where = "" if isinstance(value, str) else f"item {index} "
+            where = "" if isinstance(value, str) else f"item {index} "
+            try:
+                found = self._compiled.search(item, timeout=PATTERN_TIMEOUT_S)
+            except TimeoutError:
+                return (
+                    f"{where}could not be matched against {self.regex!r} ({self.rule}) within "
+                    f"{PATTERN_TIMEOUT_S * 1000:g} ms: the pattern backtracks too much on "
+                    f"{_fmt(item)}"
+                )
+            if found is None:
                 return f"{where}must match {self.regex!r} ({self.rule}), got {_fmt(item)}"
         return None
 
@@ -344,7 +365,7 @@ def _pattern(arg: Any, _type: str) -> Pattern:
         raise ValidatorArgumentError(f"pattern must be a string, got {_fmt(arg)}")
     try:
         return Pattern(arg)
-    except re.error as exc:
+    except (re.error, regex_engine.error) as exc:
         raise ValidatorArgumentError(f"pattern {arg!r} is not a valid regex: {exc}") from None
 
 

@@ -37,6 +37,7 @@ parameters:
   samples: {type: double_array, default: [], validators: [{element_bounds: [-1.0, 1.0]}]}
   free_samples: {type: double_array, default: []}
   blob: {type: byte_array, default: []}
+  word: {type: string, default: aa, validators: [{pattern: '^(a|aa)+$'}]}
 """
 
 DEFAULTS: dict[str, Any] = {
@@ -53,6 +54,7 @@ DEFAULTS: dict[str, Any] = {
     "samples": (),
     "free_samples": (),
     "blob": b"",
+    "word": "aa",
 }
 
 
@@ -173,6 +175,20 @@ def test_enormous_values_are_checked_and_served(declared: Declared) -> None:
     assert not result.successful and "item 200000" in result.reason
     declared.assert_state({**DEFAULTS, "samples": tuple(big_array), "any_text": big_text})
     assert time.monotonic() - started < 30
+
+
+def test_a_pattern_that_backtracks_cannot_stall_the_node(declared: Declared) -> None:
+    """'^(a|aa)+$' takes hours on this value with a backtracking matcher: refused in 50 ms."""
+    (result,) = declared.client.set(Parameter("word", value="a" * 64 + "!"))
+    assert not result.successful
+    assert result.reason.startswith(
+        "word: could not be matched against '^(a|aa)+$' (pattern) within 50 ms: "
+        "the pattern backtracks too much on 'aaaa"
+    )
+    declared.assert_state(DEFAULTS)
+    (result,) = declared.client.set(Parameter("word", value="a" * 64))
+    assert result.successful
+    declared.assert_state({**DEFAULTS, "word": "a" * 64})
 
 
 def test_a_flood_of_sets_leaves_one_consistent_state(declared: Declared) -> None:
