@@ -79,6 +79,7 @@ class _ModelBuilder:
         self.leaf_paths: dict[str, Path] = {}  # parameter ROS name -> its document path
         self.mapped: list[tuple[Group, Path]] = []
         self.aliases: list[tuple[str, Path, Parameter]] = []  # (alias, where, its parameter)
+        self.unbuilt: list[tuple[str, ...]] = []  # paths of names left out for known problems
 
     def problem(self, path: Path, message: str, *, at_key: bool = False) -> None:
         where = self.document.key_location(path) if at_key else self.document.value_location(path)
@@ -90,9 +91,9 @@ class _ModelBuilder:
         class_name = naming.class_name(name)
         self.class_names.add(class_name)
         root = self.group(data["parameters"], ("parameters",), (), "", class_name)
-        check_maps(root, self.mapped, self.leaf_paths, self.problem)
+        check_maps(root, self.mapped, self.leaf_paths, self.problem, self.is_unbuilt)
         check_aliases(root, self.aliases, self.problem)
-        rules, rule_problems = build_rules(self.document, root.walk_parameters())
+        rules, rule_problems = build_rules(self.document, root.walk_parameters(), self.is_unbuilt)
         self.problems.extend(rule_problems)
         return Schema(
             name=name,
@@ -131,9 +132,10 @@ class _ModelBuilder:
             key_path = (*doc_path, key)
             if not self.check_name(key, key_path, attributes, top_level=not path):
                 continue
-            if self.skipped(key_path, whole_tree=isinstance(value, dict) and "type" in value):
-                continue
             child_path = (*member_path, key)
+            if self.skipped(key_path, whole_tree=isinstance(value, dict) and "type" in value):
+                self.unbuilt.append(child_path)
+                continue
             child_attribute = naming.attribute_name(key)
             if isinstance(value, dict) and "type" in value:
                 parameters.append(self.parameter(value, key_path, child_path, child_attribute))
@@ -155,6 +157,16 @@ class _ModelBuilder:
         if mapped_over:
             self.mapped.append((group, doc_path))
         return group
+
+    def is_unbuilt(self, name: str) -> bool:
+        """Whether ``name`` (a ROS name or its attribute spelling) lies in a part of the
+        schema left out for a problem of its own: a reference to it is no new problem."""
+        parts = tuple(name.split("."))
+        for path in self.unbuilt:
+            spelled = tuple(map(naming.attribute_name, path))
+            if parts[: len(path)] in (path, spelled):
+                return True
+        return False
 
     def skipped(self, path: Path, *, whole_tree: bool) -> bool:
         """Whether a known problem sits at ``path`` (or, for a leaf, anywhere inside it)."""

@@ -111,6 +111,7 @@ class RuleError(ValueError):
 
     def __init__(self, message: str, offset: int | None = None) -> None:
         self.offset = offset
+        self.unknown_name: str | None = None  # a name that is no parameter, as spelled
         where = f" (at character {offset + 1})" if offset is not None else ""
         super().__init__(f"{message}{where}")
 
@@ -229,7 +230,9 @@ class _Compiler:
     def parameter(self, node: ast.expr, spelling: str) -> tuple[str, Evaluator]:
         ros_name = self.spellings.get(spelling)
         if ros_name is None:
-            raise self.error(node, self.unknown(spelling))
+            error = self.error(node, self.unknown(spelling))
+            error.unknown_name = spelling
+            raise error
         self.used[ros_name] = None
         return self.kinds[ros_name], lambda values: values[ros_name]
 

@@ -5,7 +5,7 @@ They run once the whole tree is built, since a reference may point anywhere in i
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import Protocol
 
 from genparams import naming
@@ -35,8 +35,12 @@ def check_maps(
     mapped: Sequence[tuple[Group, Path]],
     leaf_paths: dict[str, Path],
     report: Report,
+    unbuilt: Callable[[str], bool] = lambda name: False,
 ) -> None:
-    """Each ``for_each`` names a fixed string_array parameter whose default keys entries."""
+    """Each ``for_each`` names a fixed string_array parameter whose default keys entries.
+
+    ``unbuilt``: whether a name was left out for a problem of its own, already reported.
+    """
     fixed = {p.ros_name: p for p in root.walk_parameters() if naming.ENTRY_KEY not in p.path}
     map_paths = [(group.path, group.ros_name) for group, _ in mapped]
     for group, doc_path in mapped:
@@ -44,7 +48,8 @@ def check_maps(
         target = group.mapped_over
         param = fixed.get(target)
         if param is None:
-            report(where, _missing_target(target, fixed, map_paths))
+            if not unbuilt(target):
+                report(where, _missing_target(target, fixed, map_paths))
         elif param.type.name != "string_array":
             report(
                 where,

@@ -7,7 +7,7 @@ has a default). Problems point at the rule's ``check`` value.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from typing import Any
 
 from genparams.errors import SchemaProblem
@@ -18,8 +18,12 @@ from genparams.rules import RuleError, compile_rule
 
 
 def build_rules(
-    document: LoadedDocument, parameters: Iterable[Parameter]
+    document: LoadedDocument,
+    parameters: Iterable[Parameter],
+    unbuilt: Callable[[str], bool] = lambda name: False,
 ) -> tuple[tuple[Rule, ...], list[SchemaProblem]]:
+    """``unbuilt``: spellings of parameters left out for problems of their own, already
+    reported; a rule reading one is skipped rather than told it reads no parameter."""
     # Entries of mapped groups come and go at run time: rules read fixed parameters only.
     by_name = {p.ros_name: p for p in parameters if ENTRY_KEY not in p.ros_name.split(".")}
     types = {name: p.type.name for name, p in by_name.items()}
@@ -43,7 +47,8 @@ def build_rules(
         try:
             compiled = compile_rule(name, check, description, types)
         except RuleError as exc:
-            problem((*path, "check"), str(exc))
+            if exc.unknown_name is None or not unbuilt(exc.unknown_name):
+                problem((*path, "check"), str(exc))
             continue
         defaults = {n: by_name[n].default for n in compiled.parameters}
         # A required parameter has no default, and a bad default is already reported.
