@@ -105,7 +105,7 @@ API = ["snapshot", "declare", "defaults", "on_change", "to_dict", "remote", "cha
 
 
 def test_keywords_builtins_and_api_names_are_usable(ros: RosHarness, tmp_path: Path) -> None:
-    names = KEYWORDS + BUILTINS
+    names = list(dict.fromkeys(KEYWORDS + BUILTINS))  # 'type' is a soft keyword from 3.12
     body = [f"  {name}: {{type: int, default: {i}}}" for i, name in enumerate(names)]
     body.append("  api:")
     body += [f"    {name}: {{type: string, default: {name}}}" for name in API]
