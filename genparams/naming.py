@@ -85,3 +85,12 @@ def join_prefix(prefix: str, name: str) -> str:
     """Join a parameter prefix and a name with exactly one dot."""
     prefix = prefix.strip(".")
     return f"{prefix}.{name}" if prefix else name
+
+
+def strip_prefix(prefix: str, full_name: str) -> str | None:
+    """The name under ``prefix`` that ``full_name`` stands for, or None if it lies elsewhere."""
+    prefix = prefix.strip(".")
+    if not prefix:
+        return full_name
+    head = prefix + "."
+    return full_name[len(head) :] if full_name.startswith(head) else None

@@ -23,6 +23,22 @@ def _fill(parts: Sequence[str], keys: Sequence[str]) -> list[str]:
     return [next(chosen) if part == ENTRY_KEY else part for part in parts]
 
 
+def template_keys(template_name: str, name: str) -> list[str] | None:
+    """The keys that fill the ``*`` of a template to give ``name``, or None if it has
+    another shape: ``gains.*.p`` and ``gains.elbow.p`` -> ``["elbow"]``."""
+    pattern = template_name.split(".")
+    parts = name.split(".")
+    if len(pattern) != len(parts):
+        return None
+    keys = []
+    for part, expected in zip(parts, pattern, strict=True):
+        if expected == ENTRY_KEY:
+            keys.append(part)
+        elif part != expected:
+            return None
+    return keys
+
+
 def instantiate(template: CompiledParam, keys: Sequence[str]) -> CompiledParam:
     """The parameter of one entry: each ``*`` of the template replaced by the next key."""
     name = ".".join(_fill(template.name.split("."), keys))

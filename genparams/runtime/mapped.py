@@ -29,11 +29,11 @@ from typing import TYPE_CHECKING, Any
 from rcl_interfaces.msg import SetParametersResult
 from rclpy.parameter import Parameter
 
-from genparams.naming import ENTRY_KEY, join_prefix
+from genparams.naming import join_prefix, strip_prefix
 from genparams.runtime.changes import Change
 from genparams.runtime.declaring import descriptor_for, replace_batch, ros_parameter
 from genparams.runtime.deprecation import Notices
-from genparams.runtime.entries import expand
+from genparams.runtime.entries import expand, template_keys
 from genparams.runtime.overrides import OverrideReader
 from genparams.runtime.resolve import resolve_values
 from genparams.runtime.spec import CompiledParam, CompiledSchema
@@ -62,7 +62,7 @@ class MappedEntries:
         self.entries = dict(entries)  # relative name -> parameter, in key order
         self.key_names = frozenset(compiled.maps.values())  # relative names of key parameters
         self.keys_by_full_name = {self.full_name(k): k for k in self.key_names}
-        self.template_parts = tuple(tuple(name.split(".")) for name in compiled.templates)
+        self.templates = tuple(compiled.templates)  # "gains.*.p"
         self.replacing = False  # True while this binding declares and undeclares its entries
 
     @classmethod
@@ -138,18 +138,11 @@ class MappedEntries:
         """``full_name`` has the shape of an entry of this binding but is not declared."""
         if full_name in self.binding.owned:
             return False
-        prefix = self.binding.prefix
-        if prefix:
-            if not full_name.startswith(prefix + "."):
-                return False
-            full_name = full_name[len(prefix) + 1 :]
-        parts = full_name.split(".")
-        shaped = any(
-            len(parts) == len(template)
-            and all(t == ENTRY_KEY or t == part for t, part in zip(template, parts, strict=True))
-            for template in self.template_parts
-        )
-        return shaped and not self.binding.node.has_parameter(self.full_name(full_name))
+        name = strip_prefix(self.binding.prefix, full_name)
+        if name is None:
+            return False
+        shaped = any(template_keys(template, name) is not None for template in self.templates)
+        return shaped and not self.binding.node.has_parameter(full_name)
 
     def _refusal_of_others(
         self,

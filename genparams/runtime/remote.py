@@ -18,10 +18,10 @@ from rclpy.parameter import Parameter, parameter_value_to_python
 from rclpy.parameter_client import AsyncParameterClient
 from rclpy.task import Future
 
-from genparams.naming import ENTRY_KEY, is_entry_key, join_prefix
+from genparams.naming import is_entry_key, join_prefix, strip_prefix
 from genparams.runtime.binding import check_prefix
 from genparams.runtime.changes import Changes
-from genparams.runtime.entries import expand, instantiate
+from genparams.runtime.entries import expand, instantiate, template_keys
 from genparams.runtime.errors import RemoteParameterError, RemoteSetError
 from genparams.runtime.params import Params
 from genparams.runtime.spec import CompiledParam, compile_schema
@@ -78,10 +78,7 @@ class RemoteParams(Generic[P]):
         return join_prefix(self.prefix, name)
 
     def relative_name(self, full_name: str) -> str | None:
-        if not self.prefix:
-            return full_name
-        head = self.prefix + "."
-        return full_name[len(head) :] if full_name.startswith(head) else None
+        return strip_prefix(self.prefix, full_name)
 
     def wait_for_services(self, timeout_sec: float | None = None) -> bool:
         """Block until the target's parameter services answer; False after ``timeout_sec``."""
@@ -161,15 +158,10 @@ class RemoteParams(Generic[P]):
         param = self.compiled.parameters.get(name)
         if param is not None:
             return param
-        parts = name.split(".")
         for template in self.compiled.templates.values():
-            pattern = template.name.split(".")
-            if len(pattern) == len(parts) and all(
-                t in (p, ENTRY_KEY) for p, t in zip(parts, pattern, strict=True)
-            ):
-                keys = [p for p, t in zip(parts, pattern, strict=True) if t == ENTRY_KEY]
-                if all(is_entry_key(key) for key in keys):
-                    return instantiate(template, keys)
+            keys = template_keys(template.name, name)
+            if keys is not None and all(is_entry_key(key) for key in keys):
+                return instantiate(template, keys)
         return None
 
     def set(self, values: Mapping[str, Any]) -> TypedFuture[None]:
