@@ -9,6 +9,7 @@ delivery can be traced to the one accepted set that caused it.
 
 from __future__ import annotations
 
+import contextlib
 import random
 import sys
 import threading
@@ -115,20 +116,32 @@ def fast_switching() -> Iterator[None]:
         sys.setswitchinterval(interval)
 
 
+@contextlib.contextmanager
+def served_node(ros: RosHarness, name: str) -> Iterator[tuple[Node, AsyncParameterClient]]:
+    """A node whose parameter services a MultiThreadedExecutor serves, and a client for them."""
+    executor = MultiThreadedExecutor(num_threads=4, context=ros.context)
+    node = Node(unique_name(name), context=ros.context)
+    client_node = Node(unique_name(f"{name}_client"), context=ros.context)
+    executor.add_node(node)
+    executor.add_node(client_node)
+    threading.Thread(target=executor.spin, daemon=True).start()
+    try:
+        service = AsyncParameterClient(client_node, node.get_fully_qualified_name())
+        assert service.wait_for_services(timeout_sec=10.0)
+        yield node, service
+    finally:
+        executor.shutdown()
+        node.destroy_node()
+        client_node.destroy_node()
+
+
 def test_concurrent_sets_stay_consistent(
     ros: RosHarness, tmp_path: Path, fast_switching: None
 ) -> None:
     schema = tmp_path / "stress.yaml"
     schema.write_text(SCHEMA)
     module = load_generated(schema, tmp_path)
-    executor = MultiThreadedExecutor(num_threads=4, context=ros.context)
-    node = Node(unique_name("stress"), context=ros.context)
-    client_node = Node(unique_name("stress_client"), context=ros.context)
-    executor.add_node(node)
-    executor.add_node(client_node)
-    spinner = threading.Thread(target=executor.spin, daemon=True)
-    spinner.start()
-    try:
+    with served_node(ros, "stress") as (node, service):
         cfg = module.StressParams.declare(node)
         initial = cfg.snapshot()
         deliveries: list[Changes[Any]] = []
@@ -143,8 +156,6 @@ def test_concurrent_sets_stay_consistent(
             inside[0] -= 1
 
         cfg.on_change(on_change)
-        service = AsyncParameterClient(client_node, node.get_fully_qualified_name())
-        assert service.wait_for_services(timeout_sec=10.0)
 
         accepted: dict[int, dict[str, Any]] = {}  # token -> the values of an accepted set
         rejected: set[int] = set()
@@ -246,10 +257,6 @@ def test_concurrent_sets_stay_consistent(
         assert node_values(node) == final
         assert final == flat(deliveries[-1].after)
         assert elapsed < 30.0
-    finally:
-        executor.shutdown()
-        node.destroy_node()
-        client_node.destroy_node()
 
 
 MAPPED = """\
@@ -282,17 +289,8 @@ def test_concurrent_key_changes_and_entry_sets_keep_entries_in_step(
     schema = tmp_path / "mapped_stress.yaml"
     schema.write_text(MAPPED)
     module = load_generated(schema, tmp_path)
-    executor = MultiThreadedExecutor(num_threads=4, context=ros.context)
-    node = Node(unique_name("mapped_stress"), context=ros.context)
-    client_node = Node(unique_name("mapped_stress_client"), context=ros.context)
-    executor.add_node(node)
-    executor.add_node(client_node)
-    spinner = threading.Thread(target=executor.spin, daemon=True)
-    spinner.start()
-    try:
+    with served_node(ros, "mapped_stress") as (node, service):
         cfg = module.MappedStressParams.declare(node)
-        service = AsyncParameterClient(client_node, node.get_fully_qualified_name())
-        assert service.wait_for_services(timeout_sec=10.0)
         failures: list[str] = []
         outcomes = {"accepted": 0, "refused": 0, "undeclared": 0}
         record = threading.Lock()
@@ -365,7 +363,3 @@ def test_concurrent_key_changes_and_entry_sets_keep_entries_in_step(
         assert (joints, entries) == mapped_view(cfg.snapshot())
         assert sorted(entries) == sorted(f"gains.{key}.p" for key in joints)
         assert tuple(cfg.gains) == joints
-    finally:
-        executor.shutdown()
-        node.destroy_node()
-        client_node.destroy_node()
