@@ -42,10 +42,10 @@ STAGE_RENDER = "render the module (render)"
 
 def codegen_stages(prepared: Prepared, repeats: int) -> list[Result]:
     """Where in-process generation time goes, one pipeline stage at a time."""
-    from genparams.builder import build_schema
-    from genparams.loader import load_yaml
-    from genparams.render import render_module
-    from genparams.schema_check import check_document
+    from genparams.outputs.render import render_module
+    from genparams.schema.builder import build_schema
+    from genparams.schema.loader import load_yaml
+    from genparams.schema.schema_check import check_document
 
     text = prepared.schema_path.read_text(encoding="utf-8")
     file = str(prepared.schema_path)

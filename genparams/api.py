@@ -7,11 +7,11 @@ import gc
 from collections.abc import Iterator
 from pathlib import Path
 
-from genparams.builder import build_schema, model_problems
-from genparams.errors import Location, SchemaError, SchemaProblem
-from genparams.loader import MAX_BYTES, load_yaml
-from genparams.model import Schema
-from genparams.schema_check import check_document
+from genparams.schema.builder import build_schema, model_problems
+from genparams.schema.errors import Location, SchemaError, SchemaProblem
+from genparams.schema.loader import MAX_BYTES, load_yaml
+from genparams.schema.model import Schema
+from genparams.schema.schema_check import check_document
 
 
 @contextlib.contextmanager
@@ -64,7 +64,7 @@ def _load_schema(path: str | Path, text: str | None) -> Schema:
 
 def generate(path: str | Path, text: str | None = None) -> str:
     """Generate the Python module for one schema and return its text."""
-    from genparams.render import render_module
+    from genparams.outputs.render import render_module
 
     with _cyclic_gc_paused():
         return render_module(load_schema(path, text))

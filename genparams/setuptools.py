@@ -7,7 +7,7 @@ In setup.py::
     setup(..., cmdclass={"build_py": build_py, "develop": develop})
 
 The modules to generate are listed in ``[tool.genparams]`` of the pyproject.toml
-next to setup.py (see genparams.project_config); each ``output`` is the path the
+next to setup.py (see genparams.integration.project_config); each ``output`` is the path the
 module has in the source tree and must lie inside a package that setup() builds.
 
 Where the generated file goes depends on what Python will import:
@@ -36,14 +36,14 @@ from setuptools.command.develop import develop as _develop
 from setuptools.errors import SetupError
 
 from genparams.api import generate
-from genparams.errors import SchemaError
-from genparams.outputs import write_all
-from genparams.project_config import (
+from genparams.integration.project_config import (
     PYPROJECT,
     ModuleTarget,
     ProjectConfigError,
     load_project_config,
 )
+from genparams.integration.writing import write_all
+from genparams.schema.errors import SchemaError
 
 __all__ = ["build_py", "develop"]
 

@@ -27,8 +27,8 @@ from hypothesis import HealthCheck, Phase, given, settings
 from hypothesis import strategies as st
 
 from genparams.api import load_schema
-from genparams.errors import SchemaError
-from genparams.render import render_module
+from genparams.outputs.render import render_module
+from genparams.schema.errors import SchemaError
 from tests.strategies import HOSTILE_TEXT, schemas
 from tests.yaml_text import Flow, block
 

@@ -17,10 +17,10 @@ from pathlib import Path
 import genparams
 from genparams.api import load_schema
 from genparams.cli import main
-from genparams.docs_model import docs_page
-from genparams.json_schema import params_file_schema
-from genparams.params_file import default_params_file
-from genparams.render import render_docs, render_params_file
+from genparams.outputs.docs_model import docs_page
+from genparams.outputs.json_schema import params_file_schema
+from genparams.outputs.params_file import default_params_file
+from genparams.outputs.render import render_docs, render_params_file
 
 TESTS = Path(__file__).resolve().parent
 ROOT = TESTS.parent

@@ -12,11 +12,11 @@ from typing import Any
 
 from rclpy.node import Node
 
-from genparams.naming import join_prefix
 from genparams.runtime import Params
+from genparams.runtime.naming import join_prefix
 from genparams.runtime.spec import compile_schema
 from genparams.runtime.tree import get_path
-from genparams.types import TYPES
+from genparams.runtime.types import TYPES
 from tests.support import RosHarness, ServiceClient
 
 

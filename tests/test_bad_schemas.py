@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from genparams.loader import MAX_BYTES
+from genparams.schema.loader import MAX_BYTES
 from tests.golden import ROOT, bad_schemas, expected_stderr_path, relative, run_cli
 
 SCHEMAS = bad_schemas()
@@ -88,7 +88,7 @@ def test_real_command_generate_exits_2_without_output(tmp_path: Path) -> None:
 MEASURE = """
 import json, resource, sys, time
 from genparams.api import load_schema
-from genparams.errors import SchemaError
+from genparams.schema.errors import SchemaError
 start = time.monotonic()
 try:
     load_schema(sys.argv[1])

@@ -16,7 +16,7 @@ from rclpy.impl.implementation_singleton import rclpy_implementation
 
 from genparams.api import load_schema
 from genparams.cli import main
-from genparams.ros_yaml import absolute
+from genparams.paramsfile.ros_yaml import absolute
 from genparams.runtime import ParameterDeclarationError
 from tests.golden import (
     EXAMPLE_SCHEMA,

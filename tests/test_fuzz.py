@@ -9,7 +9,7 @@ from __future__ import annotations
 import pytest
 
 from genparams.api import load_schema
-from genparams.errors import SchemaError
+from genparams.schema.errors import SchemaError
 from tests.budget import fuzz_seconds
 from tests.fuzz import TARGETS, check, run_for
 

@@ -14,7 +14,7 @@ import yaml
 from rclpy.parameter import Parameter
 
 from genparams.runtime.spec import compile_schema
-from genparams.types import TYPES
+from genparams.runtime.types import TYPES
 from tests.golden import case_dirs
 from tests.readback import mismatches, params_class, read_back
 from tests.support import RosHarness, import_file

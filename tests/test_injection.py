@@ -14,8 +14,8 @@ from pathlib import Path
 import pytest
 
 import genparams
-from genparams.errors import SchemaError
 from genparams.runtime.tree import get_path
+from genparams.schema.errors import SchemaError
 from tests.readback import mismatches, params_class, read_back
 from tests.support import RosHarness, import_file
 from tests.yaml_text import quoted

@@ -14,9 +14,9 @@ import yaml
 
 from genparams.api import load_schema
 from genparams.cli import main
-from genparams.json_schema import params_file_schema
-from genparams.params_file import default_params_file
-from genparams.render import render_params_file
+from genparams.outputs.json_schema import params_file_schema
+from genparams.outputs.params_file import default_params_file
+from genparams.outputs.render import render_params_file
 from tests.golden import EXAMPLE_SCHEMA, output_cases
 
 

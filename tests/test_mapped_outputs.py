@@ -7,8 +7,8 @@ import pytest
 import yaml
 
 from genparams.api import load_schema
-from genparams.docs_model import docs_page
-from genparams.json_schema import params_file_schema
+from genparams.outputs.docs_model import docs_page
+from genparams.outputs.json_schema import params_file_schema
 from tests.golden import OUTPUT_CASES
 
 SCHEMA = OUTPUT_CASES / "mapped" / "schema.yaml"

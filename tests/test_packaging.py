@@ -25,8 +25,8 @@ from camera_driver_params import CameraDriverParams
 import genparams.runtime.binding
 if CameraDriverParams.defaults({"serial": "ABCD1234"}).camera.fps != 30.0:
     sys.exit("the generated module does not work")
-generator = ("jinja2", "jsonschema", "yaml", "genparams.render", "genparams.loader",
-             "genparams.schema_check", "genparams.builder", "genparams.api")
+generator = ("jinja2", "jsonschema", "yaml", "genparams.outputs.render", "genparams.schema.loader",
+             "genparams.schema.schema_check", "genparams.schema.builder", "genparams.api")
 added = set(sys.modules) - before
 print(sorted(m for m in added if m.split(".")[0] in generator or m in generator))
 print(sorted(m for m in ("jinja2", "jsonschema") if m in sys.modules))
@@ -90,7 +90,7 @@ def test_fresh_venv_from_the_wheel_generates_and_runs(venv: Path, tmp_path: Path
         [
             venv / "bin" / "python",
             "-c",
-            "import genparams, genparams.resources as r;"
+            "import genparams, genparams.schema.resources as r;"
             "print(genparams.__file__); print(r.resource_dir('templates'));"
             "print(r.resource_dir('schemas'))",
         ],

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from genparams.project_config import (
+from genparams.integration.project_config import (
     ProjectConfigError,
     find_pyproject,
     load_project_config,

@@ -18,12 +18,12 @@ from hypothesis import given, settings
 from rclpy.parameter import Parameter
 
 import genparams
-from genparams.check_params import check_params
-from genparams.docs_model import FORMATS, docs_page
-from genparams.json_schema import params_file_schema
-from genparams.params_file import default_params_file
-from genparams.params_reader import read_params_file
-from genparams.render import render_docs, render_params_file
+from genparams.outputs.docs_model import FORMATS, docs_page
+from genparams.outputs.json_schema import params_file_schema
+from genparams.outputs.params_file import default_params_file
+from genparams.outputs.render import render_docs, render_params_file
+from genparams.paramsfile.check_params import check_params
+from genparams.paramsfile.params_reader import read_params_file
 from genparams.runtime.tree import get_path
 from tests.budget import examples
 from tests.golden import ROOT

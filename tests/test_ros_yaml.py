@@ -1,4 +1,4 @@
-"""genparams.ros_yaml against ROS itself: each spelling and node pattern is fed to a real node."""
+"""paramsfile.ros_yaml against ROS itself: each spelling and node pattern is fed to a real node."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ from typing import Any
 
 import yaml
 
-from genparams.ros_yaml import NoValue, node_matches, node_pattern_problem, ros_scalar
+from genparams.paramsfile.ros_yaml import NoValue, node_matches, node_pattern_problem, ros_scalar
 from tests.support import RosHarness
 
 SPELLINGS = [

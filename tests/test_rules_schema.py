@@ -10,7 +10,7 @@ import pytest
 
 import genparams
 from genparams.cli import main
-from genparams.errors import SchemaError
+from genparams.schema.errors import SchemaError
 from tests.support import load_generated
 
 HEADER = """\

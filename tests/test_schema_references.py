@@ -7,8 +7,8 @@ from pathlib import Path
 import pytest
 
 import genparams
-from genparams.errors import SchemaError
-from genparams.model import Schema
+from genparams.schema.errors import SchemaError
+from genparams.schema.model import Schema
 
 
 def problems(tmp_path: Path, body: str) -> list[str]:

@@ -6,9 +6,9 @@ import sys
 from pathlib import Path
 
 from genparams.api import load_schema
-from genparams.errors import SchemaError
-from genparams.model import Schema
-from genparams.outputs import write_all
+from genparams.integration.writing import write_all
+from genparams.schema.errors import SchemaError
+from genparams.schema.model import Schema
 
 
 def schema_or_none(path: Path) -> Schema | None:

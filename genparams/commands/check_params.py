@@ -6,10 +6,10 @@ import argparse
 import sys
 from pathlib import Path
 
-from genparams.check_params import check_params
 from genparams.commands._common import schema_or_none
-from genparams.params_reader import read_params_file
-from genparams.ros_yaml import absolute, node_name_problem
+from genparams.paramsfile.check_params import check_params
+from genparams.paramsfile.params_reader import read_params_file
+from genparams.paramsfile.ros_yaml import absolute, node_name_problem
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:

@@ -7,8 +7,8 @@ import sys
 from pathlib import Path
 
 from genparams.commands._common import emit, schema_or_none
-from genparams.params_file import NodeNameError, default_params_file
-from genparams.render import render_params_file
+from genparams.outputs.params_file import NodeNameError, default_params_file
+from genparams.outputs.render import render_params_file
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:

@@ -6,8 +6,8 @@ import argparse
 from pathlib import Path
 
 from genparams.commands._common import emit, schema_or_none
-from genparams.docs_model import FORMATS, docs_page
-from genparams.render import render_docs
+from genparams.outputs.docs_model import FORMATS, docs_page
+from genparams.outputs.render import render_docs
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:

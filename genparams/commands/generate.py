@@ -1,7 +1,7 @@
 """genparams generate [SCHEMA...] [-o FILE | --out-dir DIR] [--check]
 
 With no SCHEMA, the modules listed in ``[tool.genparams]`` of the nearest
-pyproject.toml are generated (see genparams.project_config).
+pyproject.toml are generated (see genparams.integration.project_config).
 """
 
 from __future__ import annotations
@@ -12,14 +12,14 @@ import sys
 from pathlib import Path
 
 from genparams.api import load_schema
-from genparams.errors import SchemaError, SchemaProblem
-from genparams.outputs import stale_diffs, write_all
-from genparams.project_config import (
+from genparams.integration.project_config import (
     ProjectConfigError,
     find_pyproject,
     load_project_config,
 )
-from genparams.render import render_module
+from genparams.integration.writing import stale_diffs, write_all
+from genparams.outputs.render import render_module
+from genparams.schema.errors import SchemaError, SchemaProblem
 
 STDOUT = Path("-")
 

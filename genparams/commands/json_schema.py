@@ -7,7 +7,7 @@ import json
 from pathlib import Path
 
 from genparams.commands._common import emit, schema_or_none
-from genparams.json_schema import params_file_schema
+from genparams.outputs.json_schema import params_file_schema
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:

@@ -7,7 +7,7 @@ import sys
 from pathlib import Path
 
 from genparams.api import load_schema
-from genparams.errors import SchemaError, SchemaProblem
+from genparams.schema.errors import SchemaError, SchemaProblem
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:

@@ -18,7 +18,6 @@ from rcl_interfaces.msg import SetParametersResult
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
-from genparams.naming import is_ros_token, join_prefix
 from genparams.runtime.aliases import Aliases, old_names_by_current
 from genparams.runtime.changes import Change, Changes
 from genparams.runtime.consistency import parameter_set_lock
@@ -27,6 +26,7 @@ from genparams.runtime.deprecation import DeprecationWatch, Notices, report_over
 from genparams.runtime.entries import resolve_all
 from genparams.runtime.errors import ParameterDeclarationError
 from genparams.runtime.mapped import MappedEntries
+from genparams.runtime.naming import is_ros_token, join_prefix
 from genparams.runtime.overrides import OverrideReader
 from genparams.runtime.params import Params
 from genparams.runtime.rewrites import add_rewrite, typed_empty_arrays

@@ -7,7 +7,7 @@ from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import replace
 from typing import Any
 
-from genparams.naming import ENTRY_KEY
+from genparams.runtime.naming import ENTRY_KEY
 from genparams.runtime.resolve import resolve_values
 from genparams.runtime.spec import CompiledParam, CompiledSchema
 

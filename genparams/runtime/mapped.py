@@ -29,11 +29,11 @@ from typing import TYPE_CHECKING, Any
 from rcl_interfaces.msg import SetParametersResult
 from rclpy.parameter import Parameter
 
-from genparams.naming import join_prefix, strip_prefix
 from genparams.runtime.changes import Change
 from genparams.runtime.declaring import descriptor_for, replace_batch, ros_parameter
 from genparams.runtime.deprecation import Notices
 from genparams.runtime.entries import expand, template_keys
+from genparams.runtime.naming import join_prefix, strip_prefix
 from genparams.runtime.overrides import OverrideReader
 from genparams.runtime.resolve import resolve_values
 from genparams.runtime.spec import CompiledParam, CompiledSchema

@@ -18,15 +18,15 @@ from rclpy.parameter import Parameter, parameter_value_to_python
 from rclpy.parameter_client import AsyncParameterClient
 from rclpy.task import Future
 
-from genparams.naming import is_entry_key, join_prefix, strip_prefix
 from genparams.runtime.binding import check_prefix
 from genparams.runtime.changes import Changes
 from genparams.runtime.entries import expand, instantiate, template_keys
 from genparams.runtime.errors import RemoteParameterError, RemoteSetError
+from genparams.runtime.naming import is_entry_key, join_prefix, strip_prefix
 from genparams.runtime.params import Params
 from genparams.runtime.spec import CompiledParam, compile_schema
 from genparams.runtime.tree import build_tree
-from genparams.types import ValueTypeError
+from genparams.runtime.types import ValueTypeError
 
 if TYPE_CHECKING:
     from genparams.runtime.remote_watch import RemoteWatch

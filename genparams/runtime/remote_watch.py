@@ -26,7 +26,7 @@ from genparams.runtime.params import Params
 from genparams.runtime.remote import RemoteParams, TypedFuture
 from genparams.runtime.spec import CompiledParam
 from genparams.runtime.tree import get_path, replace_values
-from genparams.types import ValueTypeError
+from genparams.runtime.types import ValueTypeError
 
 P = TypeVar("P", bound=Params)
 

@@ -6,7 +6,7 @@ from collections.abc import Callable, Mapping
 from typing import Any
 
 from genparams.runtime.spec import CompiledParam, CompiledSchema
-from genparams.types import ValueTypeError
+from genparams.runtime.types import ValueTypeError
 
 
 def resolve_values(

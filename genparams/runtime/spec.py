@@ -6,10 +6,10 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from genparams.naming import ENTRY_KEY, ENTRY_KEY_RULE, attribute_name, entry_key_problem
-from genparams.rules import CompiledRule, RuleError, compile_rule, rules_by_parameter
-from genparams.types import TYPES, ParamType
-from genparams.validators import OneOf, RosRange, SubsetOf, Validator, build_validator
+from genparams.runtime.naming import ENTRY_KEY, ENTRY_KEY_RULE, attribute_name, entry_key_problem
+from genparams.runtime.rules import CompiledRule, RuleError, compile_rule, rules_by_parameter
+from genparams.runtime.types import TYPES, ParamType
+from genparams.runtime.validators import OneOf, RosRange, SubsetOf, Validator, build_validator
 
 if TYPE_CHECKING:
     from genparams.runtime.tree import Group
@@ -34,7 +34,7 @@ class ParamSpec:
 
 @dataclass(frozen=True)
 class RuleSpec:
-    """A cross-parameter rule: ``check`` is an expression of genparams.rules, kept as text."""
+    """A cross-parameter rule: ``check`` is an expression of ``runtime.rules``, kept as text."""
 
     name: str
     check: str

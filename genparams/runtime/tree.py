@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Callable, Collection, Iterable, Iterator, Mapping
 from typing import Any, TypeGuard, TypeVar, cast, final
 
-from genparams.naming import ENTRY_KEY, attribute_name
+from genparams.runtime.naming import ENTRY_KEY, attribute_name
 
 _READ_ONLY = (
     "{cls}.{name} is read-only: change parameters through the node "

@@ -10,9 +10,9 @@ from typing import Any
 
 import jsonschema
 
-from genparams.errors import SchemaProblem
-from genparams.loader import LoadedDocument, Path, dotted
-from genparams.resources import resource_dir
+from genparams.schema.errors import SchemaProblem
+from genparams.schema.loader import LoadedDocument, Path, dotted
+from genparams.schema.resources import resource_dir
 
 
 @functools.cache
@@ -99,7 +99,7 @@ def _problems(
 
 
 def _validator_message(instance: Any) -> str:
-    from genparams.validators import KINDS
+    from genparams.runtime.validators import KINDS
 
     if isinstance(instance, str) and instance in KINDS:
         return f"validator {instance!r} needs an argument: {{{instance}: ...}}"

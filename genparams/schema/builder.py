@@ -12,15 +12,9 @@ import os
 from collections.abc import Collection, Iterable, Iterator
 from typing import Any
 
-from genparams import naming
-from genparams.errors import SchemaError, SchemaProblem
-from genparams.loader import LoadedDocument, Path, dotted
-from genparams.model import Group, Parameter, RangeSpec, Schema, ValidatorSpec
-from genparams.references import check_aliases, check_maps
-from genparams.rule_builder import build_rules
-from genparams.schema_check import did_you_mean
-from genparams.types import INT64_MAX, INT64_MIN, TYPES, ParamType, ValueTypeError
-from genparams.validators import (
+from genparams.runtime import naming
+from genparams.runtime.types import INT64_MAX, INT64_MIN, TYPES, ParamType, ValueTypeError
+from genparams.runtime.validators import (
     KINDS,
     OneOf,
     RosRange,
@@ -29,6 +23,12 @@ from genparams.validators import (
     ValidatorArgumentError,
     build_validator,
 )
+from genparams.schema.errors import SchemaError, SchemaProblem
+from genparams.schema.loader import LoadedDocument, Path, dotted
+from genparams.schema.model import Group, Parameter, RangeSpec, Schema, ValidatorSpec
+from genparams.schema.references import check_aliases, check_maps
+from genparams.schema.rule_builder import build_rules
+from genparams.schema.schema_check import did_you_mean
 
 FOR_EACH = "for_each"
 
@@ -457,7 +457,7 @@ def _keys(tree: Any) -> Iterator[str]:
 
 
 def _limits(check: Validator) -> tuple[float, bool, float, bool] | None:
-    from genparams.validators import Bounds, Compare
+    from genparams.runtime.validators import Bounds, Compare
 
     if isinstance(check, RosRange) or (isinstance(check, Bounds) and not check.each):
         return (check.low, False, check.high, False)

@@ -15,9 +15,15 @@ import math
 from dataclasses import dataclass, replace
 
 from genparams import __version__
-from genparams.model import Group, Parameter, Schema
-from genparams.ros_yaml import PARAMS_KEY, absolute, node_pattern_problem, ros_scalar
-from genparams.yaml_text import comment_lines, double_text, key_text, node_key_text, value_text
+from genparams.outputs.yaml_text import (
+    comment_lines,
+    double_text,
+    key_text,
+    node_key_text,
+    value_text,
+)
+from genparams.paramsfile.ros_yaml import PARAMS_KEY, absolute, node_pattern_problem, ros_scalar
+from genparams.schema.model import Group, Parameter, Schema
 
 ALL_NODES = "/**"
 _STEP = "  "

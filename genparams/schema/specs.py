@@ -8,7 +8,6 @@ worded, exactly as it is on a robot.
 
 from __future__ import annotations
 
-from genparams.model import Parameter, Schema
 from genparams.runtime.spec import (
     CompiledParam,
     CompiledSchema,
@@ -18,6 +17,7 @@ from genparams.runtime.spec import (
     compile_param,
     compile_schema,
 )
+from genparams.schema.model import Parameter, Schema
 
 
 def param_spec(parameter: Parameter) -> ParamSpec:

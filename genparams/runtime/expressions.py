@@ -26,7 +26,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from genparams.naming import attribute_name
+from genparams.runtime.naming import attribute_name
 
 MAX_CHECK_LENGTH = 2000
 

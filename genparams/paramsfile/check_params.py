@@ -15,16 +15,16 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from genparams.errors import Location, SchemaProblem
-from genparams.model import Schema
-from genparams.naming import ENTRY_KEY, ENTRY_KEY_RULE, is_entry_key
-from genparams.params_reader import ParamEntry, ParamsDocument, Section
-from genparams.ros_yaml import node_matches, ros_type_name
+from genparams.paramsfile.params_reader import ParamEntry, ParamsDocument, Section
+from genparams.paramsfile.ros_yaml import node_matches, ros_type_name
 from genparams.runtime.entries import expand
+from genparams.runtime.naming import ENTRY_KEY, ENTRY_KEY_RULE, is_entry_key
 from genparams.runtime.spec import CompiledParam
-from genparams.specs import compiled_schema
-from genparams.types import ValueTypeError
-from genparams.validators import Custom
+from genparams.runtime.types import ValueTypeError
+from genparams.runtime.validators import Custom
+from genparams.schema.errors import Location, SchemaProblem
+from genparams.schema.model import Schema
+from genparams.schema.specs import compiled_schema
 
 # Parameters rclpy declares on every node, by type; and a namespace it owns.
 BUILTIN_PARAMETERS = {"use_sim_time": "bool", "start_type_description_service": "bool"}

@@ -8,10 +8,10 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from typing import Protocol
 
-from genparams import naming
-from genparams.loader import Path
-from genparams.model import Group, Parameter
-from genparams.schema_check import did_you_mean
+from genparams.runtime import naming
+from genparams.schema.loader import Path
+from genparams.schema.model import Group, Parameter
+from genparams.schema.schema_check import did_you_mean
 
 
 class Report(Protocol):

@@ -16,13 +16,12 @@ import re
 from collections.abc import Callable, Iterator
 from typing import Any
 
-from genparams.model import Group, Parameter, Schema
-from genparams.naming import ENTRY_KEY
-from genparams.params_file import parameter_comment
-from genparams.ros_yaml import PARAMS_KEY
+from genparams.outputs.params_file import parameter_comment
+from genparams.outputs.yaml_text import value_text
+from genparams.paramsfile.ros_yaml import PARAMS_KEY
+from genparams.runtime.naming import ENTRY_KEY
 from genparams.runtime.spec import CompiledParam, EntryKeys
-from genparams.specs import compiled_param, compiled_params
-from genparams.validators import (
+from genparams.runtime.validators import (
     Bounds,
     Compare,
     Length,
@@ -34,7 +33,8 @@ from genparams.validators import (
     Unique,
     Validator,
 )
-from genparams.yaml_text import value_text
+from genparams.schema.model import Group, Parameter, Schema
+from genparams.schema.specs import compiled_param, compiled_params
 
 DRAFT = "https://json-schema.org/draft/2020-12/schema"
 _TOKEN = "(\\*\\*|\\*|[A-Za-z_][A-Za-z0-9_]*)"

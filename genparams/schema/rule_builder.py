@@ -1,7 +1,7 @@
 """Build the model of a schema's ``rules:`` and check them: names, expressions, defaults.
 
 A check may read only parameters the schema declares, must be an expression of
-genparams.rules, and the defaults must satisfy it (when every parameter it reads
+genparams.runtime.rules, and the defaults must satisfy it (when every parameter it reads
 has a default). Problems point at the rule's ``check`` value.
 """
 
@@ -10,11 +10,11 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable
 from typing import Any
 
-from genparams.errors import SchemaProblem
-from genparams.loader import LoadedDocument, Path, dotted
-from genparams.model import Parameter, Rule
-from genparams.naming import ENTRY_KEY
-from genparams.rules import RuleError, compile_rule
+from genparams.runtime.naming import ENTRY_KEY
+from genparams.runtime.rules import RuleError, compile_rule
+from genparams.schema.errors import SchemaProblem
+from genparams.schema.loader import LoadedDocument, Path, dotted
+from genparams.schema.model import Parameter, Rule
 
 
 def build_rules(

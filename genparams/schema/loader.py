@@ -17,8 +17,8 @@ from typing import Any
 
 import yaml
 
-from genparams.errors import Location, SchemaError, SchemaProblem
-from genparams.types import ros_text_problem
+from genparams.runtime.types import ros_text_problem
+from genparams.schema.errors import Location, SchemaError, SchemaProblem
 
 Path = tuple[str | int, ...]
 

@@ -12,12 +12,12 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 
 from genparams import __version__
-from genparams.model import Group, Parameter, Schema
-from genparams.naming import ENTRY_KEY
-from genparams.params_file import ParamsFile, default_params_file
+from genparams.outputs.params_file import ParamsFile, default_params_file
+from genparams.outputs.yaml_text import value_text
+from genparams.runtime.naming import ENTRY_KEY
 from genparams.runtime.spec import CompiledParam
-from genparams.specs import compiled_param, compiled_params
-from genparams.yaml_text import value_text
+from genparams.schema.model import Group, Parameter, Schema
+from genparams.schema.specs import compiled_param, compiled_params
 
 FORMATS = ("markdown", "rst")
 

@@ -9,11 +9,12 @@ from typing import Any
 
 import jinja2
 
-from genparams import __version__, markup
-from genparams.docs_model import DocsPage
-from genparams.model import Schema
-from genparams.params_file import ParamsFile
-from genparams.resources import resource_dir
+from genparams import __version__
+from genparams.outputs import markup
+from genparams.outputs.docs_model import DocsPage
+from genparams.outputs.params_file import ParamsFile
+from genparams.schema.model import Schema
+from genparams.schema.resources import resource_dir
 
 _ESCAPE_OR_DOUBLE_QUOTE = re.compile(r'\\.|"', re.DOTALL)
 

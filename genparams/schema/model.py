@@ -10,10 +10,10 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import Any
 
-from genparams.errors import Location
-from genparams.naming import ENTRY_KEY
-from genparams.types import ParamType
-from genparams.validators import RosRange
+from genparams.runtime.naming import ENTRY_KEY
+from genparams.runtime.types import ParamType
+from genparams.runtime.validators import RosRange
+from genparams.schema.errors import Location
 
 
 @dataclass(frozen=True)

@@ -15,9 +15,7 @@ from typing import Any
 
 import yaml
 
-from genparams.errors import Location, SchemaError, SchemaProblem
-from genparams.loader import LoadedDocument, Path, compose_yaml, dotted
-from genparams.ros_yaml import (
+from genparams.paramsfile.ros_yaml import (
     PARAMS_KEY,
     NoValue,
     absolute,
@@ -25,6 +23,8 @@ from genparams.ros_yaml import (
     ros_scalar,
     ros_type_name,
 )
+from genparams.schema.errors import Location, SchemaError, SchemaProblem
+from genparams.schema.loader import LoadedDocument, Path, compose_yaml, dotted
 
 
 @dataclass(frozen=True)

@@ -2,7 +2,7 @@
 
 The code generator uses this module to check rules and the schema defaults
 against them; the runtime to check every proposed change. The expression
-language lives in genparams.expressions.
+language lives in genparams.runtime.expressions.
 """
 
 from __future__ import annotations
@@ -10,7 +10,13 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
 
-from genparams.expressions import Expression, RuleError, Values, compile_expression, kind_words
+from genparams.runtime.expressions import (
+    Expression,
+    RuleError,
+    Values,
+    compile_expression,
+    kind_words,
+)
 
 __all__ = ["CompiledRule", "RuleError", "compile_rule", "rules_by_parameter"]
 
