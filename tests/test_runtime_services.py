@@ -115,10 +115,14 @@ def test_veto_by_another_callback_leaves_cfg_unchanged(
     ros: RosHarness, module: types.ModuleType
 ) -> None:
     node = ros.node(args=SERIAL)
-    cfg = module.CameraDriverParams.declare(node)
+    armed = False
+    # Added before declaring, so rclpy (which runs the callback added last first) runs it
+    # after genparams' own check accepted the value: a commit made on-set would show.
     node.add_on_set_parameters_callback(
-        lambda params: SetParametersResult(successful=False, reason="vetoed by safety")
+        lambda params: SetParametersResult(successful=not armed, reason="vetoed by safety")
     )
+    cfg = module.CameraDriverParams.declare(node)
+    armed = True
     (result,) = ros.client(node).set(Parameter("camera.fps", value=10.0))
     assert _reason(result) == "vetoed by safety"
     assert cfg.camera.fps == 30.0 and cfg.snapshot().camera.fps == 30.0

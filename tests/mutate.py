@@ -1,0 +1,170 @@
+"""Mutation testing of the runtime and the params-file checker, module by module (mutmut).
+
+    python -m tests.mutate run [MODULE ...]     # test the unchecked mutants of these modules
+    python -m tests.mutate recheck [MODULE ...] # run the survivors again (after new tests)
+    python -m tests.mutate report               # score per module, survivors not accepted
+    python -m tests.mutate sample [N]           # N mutants drawn afresh; fail on a new survivor
+
+mutmut (configured in pyproject.toml, [tool.mutmut]) copies the package into
+mutants/, records which tests call each function, and runs each mutant against
+only those tests. Its results stay in mutants/*.meta between runs, so a long run
+can be stopped and resumed. MODULE is a dotted name such as
+``genparams.runtime.binding``; without one, every module in CORE then the rest.
+
+Survivors that no test can kill (equivalent mutants) or that are accepted are
+listed with the reason in tests/mutation_accepted.txt; ``report`` and ``sample``
+fail only on a survivor missing from it.
+"""
+
+from __future__ import annotations
+
+import json
+import random
+import subprocess
+import sys
+from collections import Counter
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+MUTANTS = ROOT / "mutants"
+ACCEPTED = ROOT / "tests" / "mutation_accepted.txt"
+MUTMUT = [sys.executable, "-m", "mutmut"]
+
+# The modules whose every change of behaviour a test must catch, first.
+CORE = (
+    "genparams.runtime.validators",
+    "genparams.runtime.binding",
+    "genparams.runtime.spec",
+    "genparams.runtime.entries",
+    "genparams.runtime.tree",
+    "genparams.paramsfile.check_params",
+    "genparams.paramsfile.params_reader",
+    "genparams.paramsfile.ros_yaml",
+)
+PACKAGES = ("genparams/runtime", "genparams/paramsfile")
+
+STATUS = {1: "killed", 3: "killed", 0: "survived", 5: "no tests", 33: "no tests", 37: "typed"}
+TIMEOUTS = {24, -24, 152, 255, 36}
+
+
+def status(code: int | None) -> str:
+    if code is None:
+        return "unchecked"
+    if code in TIMEOUTS:
+        return "timeout"  # a mutant that hangs the tests is caught
+    return STATUS.get(code, "suspicious")
+
+
+def all_modules() -> list[str]:
+    names = [
+        str(path.relative_to(ROOT).with_suffix("")).replace("/", ".")
+        for package in PACKAGES
+        for path in sorted((ROOT / package).glob("*.py"))
+        if path.name != "__init__.py"
+    ]
+    return [*CORE, *(name for name in names if name not in CORE)]
+
+
+def results(module: str) -> dict[str, int | None]:
+    meta = MUTANTS / (module.replace(".", "/") + ".py.meta")
+    if not meta.exists():
+        return {}
+    codes: dict[str, int | None] = json.loads(meta.read_text(encoding="utf-8"))["exit_code_by_key"]
+    return codes
+
+
+def accepted() -> dict[str, str]:
+    """Mutant name -> why it may survive."""
+    if not ACCEPTED.exists():
+        return {}
+    out = {}
+    for line in ACCEPTED.read_text(encoding="utf-8").splitlines():
+        if line.strip() and not line.startswith("#"):
+            name, _, reason = line.partition(" ")
+            out[name] = reason.strip()
+    return out
+
+
+def mutmut_run(names: list[str]) -> None:
+    if names:
+        subprocess.run([*MUTMUT, "run", *names], cwd=ROOT, check=False)
+
+
+def generate() -> None:
+    """Create or refresh mutants/ (mutmut does it as part of any run; this one runs nothing)."""
+    if not MUTANTS.exists() or not any(results(m) for m in CORE):
+        subprocess.run([*MUTMUT, "run", "genparams.runtime.changes*"], cwd=ROOT, check=False)
+
+
+def run(modules: list[str], *, which: str) -> None:
+    generate()
+    for module in modules:
+        names = [n for n, code in results(module).items() if status(code) == which]
+        print(f"{module}: {len(names)} {which} mutants", flush=True)
+        mutmut_run(names)
+
+
+def score(counts: Counter[str]) -> float | None:
+    caught = counts["killed"] + counts["timeout"] + counts["typed"]
+    judged = caught + counts["survived"] + counts["suspicious"] + counts["no tests"]
+    return None if not judged else 100.0 * caught / judged
+
+
+def report() -> int:
+    allowed = accepted()
+    unexplained: list[str] = []
+    print("| module | mutants | killed | survived (accepted) | no tests | unchecked | score |")
+    print("|---|---|---|---|---|---|---|")
+    for module in all_modules():
+        codes = results(module)
+        if not codes:
+            continue
+        counts = Counter(status(code) for code in codes.values())
+        survivors = [n for n, c in codes.items() if status(c) in ("survived", "suspicious")]
+        unexplained += [n for n in survivors if n not in allowed]
+        ok = sum(1 for n in survivors if n in allowed)
+        value = score(counts)
+        shown = "-" if value is None else f"{value:.1f}%"
+        print(
+            f"| {module} | {len(codes)} | {counts['killed'] + counts['timeout']} | "
+            f"{len(survivors)} ({ok}) | {counts['no tests']} | {counts['unchecked']} | {shown} |"
+        )
+    for name in unexplained:
+        print(f"survivor not explained in {ACCEPTED.name}: {name}")
+    return 1 if unexplained else 0
+
+
+def sample(size: int, seed: int) -> int:
+    """Run ``size`` mutants of the core modules afresh; a survivor not accepted fails."""
+    generate()
+    names = sorted(n for module in CORE for n in results(module))
+    chosen = random.Random(seed).sample(names, min(size, len(names)))
+    mutmut_run(chosen)
+    allowed = accepted()
+    by_module = {m: results(m) for m in CORE}
+    codes = {n: c for r in by_module.values() for n, c in r.items()}
+    new = [n for n in chosen if status(codes[n]) in ("survived", "suspicious") and n not in allowed]
+    counts = Counter(status(codes[n]) for n in chosen)
+    print(f"sample of {len(chosen)} (seed {seed}): {dict(counts)}")
+    for name in new:
+        print(f"new survivor: {name}  (see: python -m mutmut show {name})")
+    return 1 if new else 0
+
+
+def main(argv: list[str]) -> int:
+    command, *rest = argv or ["report"]
+    if command in ("run", "recheck"):
+        run(rest or all_modules(), which="unchecked" if command == "run" else "survived")
+        return report()
+    if command == "report":
+        return report()
+    if command == "sample":
+        size = int(rest[0]) if rest else 40
+        seed = int(rest[1]) if len(rest) > 1 else random.SystemRandom().randrange(1 << 30)
+        return sample(size, seed)
+    print(__doc__, file=sys.stderr)
+    return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

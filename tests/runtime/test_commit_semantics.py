@@ -1,0 +1,119 @@
+"""What reaches ``cfg`` and ``on_change``, and when.
+
+A set to the value a parameter already holds changes nothing and notifies no
+one (equal, not identical: every set carries a fresh object). A set another
+on-set callback vetoes after genparams accepted it must leave ``cfg`` as it
+was: values are committed only from the post-set callback.
+"""
+
+from __future__ import annotations
+
+import types
+from pathlib import Path
+
+import pytest
+from rcl_interfaces.msg import SetParametersResult
+from rclpy.parameter import Parameter
+
+from genparams.runtime import Changes
+from tests.support import ROOT, RosHarness, load_generated
+
+SCHEMA = ROOT / "examples" / "camera_node" / "camera_driver.yaml"
+SERIAL = ["-p", "serial:=ABCD1234"]
+
+
+@pytest.fixture
+def module(tmp_path: Path) -> types.ModuleType:
+    return load_generated(SCHEMA, tmp_path)
+
+
+def test_setting_the_current_value_notifies_no_one(
+    ros: RosHarness, module: types.ModuleType
+) -> None:
+    node = ros.node(args=SERIAL)
+    cfg = module.CameraDriverParams.declare(node)
+    seen: list[Changes[object]] = []
+    cfg.on_change(seen.append)
+    before = cfg.snapshot()
+    client = ros.client(node)
+    same = [
+        Parameter("camera.fps", value=30.0),
+        Parameter("camera.width", value=640),
+        Parameter("camera.encoding", value="rgb8"),
+        Parameter("topics", value=["/sensor/data", "/robot/status"]),
+    ]
+    assert all(result.successful for result in client.set(*same))
+    assert client.set_atomically(*same).successful
+    node.set_parameters(same)
+    assert seen == []
+    assert cfg.snapshot() is before  # nothing was rebuilt either
+
+
+def test_a_mixed_set_reports_only_what_changed(ros: RosHarness, module: types.ModuleType) -> None:
+    node = ros.node(args=SERIAL)
+    cfg = module.CameraDriverParams.declare(node)
+    seen: list[Changes[object]] = []
+    cfg.on_change(seen.append)
+    result = ros.client(node).set_atomically(
+        Parameter("camera.fps", value=30.0), Parameter("camera.width", value=800)
+    )
+    assert result.successful
+    (changes,) = seen
+    assert [(c.name, c.old, c.new) for c in changes] == [("camera.width", 640, 800)]
+    assert changes.names == {"camera.width"}
+    ros.client(node).set(Parameter("camera.width", value=800))
+    assert len(seen) == 1
+
+
+def test_a_veto_after_genparams_accepted_leaves_cfg_unchanged(
+    ros: RosHarness, module: types.ModuleType
+) -> None:
+    """rclpy runs the callback added last first: adding the veto before declaring makes
+    it run after genparams' own check accepted the value."""
+    node = ros.node(args=SERIAL)
+    calls: list[str] = []
+
+    def veto(parameters: list[Parameter]) -> SetParametersResult:
+        if not calls:  # armed only after declaring: declarations pass through it too
+            return SetParametersResult(successful=True)
+        calls.append("veto")
+        return SetParametersResult(successful=False, reason="vetoed by safety")
+
+    node.add_on_set_parameters_callback(veto)
+    cfg = module.CameraDriverParams.declare(node)
+    seen: list[Changes[object]] = []
+    cfg.on_change(seen.append)
+    calls.append("armed")
+    (result,) = ros.client(node).set(Parameter("camera.fps", value=10.0))
+    assert (result.successful, result.reason) == (False, "vetoed by safety")
+    assert calls == ["armed", "veto"]
+    assert cfg.camera.fps == 30.0 and cfg.snapshot().camera.fps == 30.0
+    assert node.get_parameter("camera.fps").value == 30.0
+    assert seen == []
+    # The next accepted set commits its own values, not the vetoed ones.
+    node.remove_on_set_parameters_callback(veto)
+    (result,) = ros.client(node).set(Parameter("camera.width", value=800))
+    assert result.successful
+    assert (cfg.camera.fps, cfg.camera.width) == (30.0, 800)
+    assert [(c.name, c.new) for c in seen[0]] == [("camera.width", 800)]
+
+
+def test_genparams_check_runs_before_a_later_veto(
+    ros: RosHarness, module: types.ModuleType
+) -> None:
+    """The veto above really ran after genparams: a value genparams refuses never reaches it."""
+    node = ros.node(args=SERIAL)
+    calls: list[str] = []
+
+    def veto(parameters: list[Parameter]) -> SetParametersResult:
+        if not calls:  # armed only after declaring: declarations pass through it too
+            return SetParametersResult(successful=True)
+        calls.append("veto")
+        return SetParametersResult(successful=False, reason="vetoed by safety")
+
+    node.add_on_set_parameters_callback(veto)
+    module.CameraDriverParams.declare(node)
+    calls.append("armed")
+    (result,) = ros.client(node).set(Parameter("control.pid.kp", value=-1.0))
+    assert result.reason == "control.pid.kp: must be >= 0.0 (ge), got -1.0"
+    assert calls == ["armed"]
