@@ -125,7 +125,8 @@ def test_custom_outcomes() -> None:
         f"custom validator {HERE}:raises raised RuntimeError: broken checker"
     )
     assert Custom(f"{HERE}:NOT_CALLABLE")(1) == (
-        f"custom validator {HERE}:NOT_CALLABLE raised TypeError: {HERE}:NOT_CALLABLE is not callable"
+        f"custom validator {HERE}:NOT_CALLABLE raised TypeError: "
+        f"{HERE}:NOT_CALLABLE is not callable"
     )
     assert Custom(f"{HERE}:raises").describe() == f"passes {HERE}:raises"
     assert Custom(f"{HERE}:raises").resolve() is raises
