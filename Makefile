@@ -6,7 +6,7 @@ VENV ?= .venv
 PYTHON := $(VENV)/bin/python
 EXAMPLE := examples/camera_node
 
-.PHONY: venv demo demo-arm tour test check lint typecheck golden bench bench-quick bench-profile clean
+.PHONY: venv demo demo-arm tour test check lint typecheck golden bench bench-quick bench-profile mutate mutate-sample clean
 
 $(VENV)/.installed: pyproject.toml
 	python3 -m venv $(VENV)
@@ -57,5 +57,15 @@ bench-quick: venv
 bench-profile: venv
 	$(PYTHON) -m bench.profile
 
+## Mutation testing of the runtime and check-params with mutmut (docs/robustness.md); MODULES=... picks some.
+## Results persist in mutants/, so a stopped run resumes; survivors are retried after the first pass.
+mutate: venv
+	$(PYTHON) -m tests.mutate run $(MODULES)
+	$(PYTHON) -m tests.mutate recheck $(MODULES)
+
+## A few minutes of it for CI: SAMPLE mutants that the last full run killed must still be killed.
+mutate-sample: venv
+	$(PYTHON) -m tests.mutate sample $(or $(SAMPLE),25)
+
 clean:
-	rm -rf $(VENV) build dist .mypy_cache .ruff_cache .pytest_cache
+	rm -rf $(VENV) build dist .mypy_cache .ruff_cache .pytest_cache mutants
