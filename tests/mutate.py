@@ -88,19 +88,46 @@ def accepted() -> dict[str, str]:
     return out
 
 
-# mutmut hands pytest the tests that cover a mutant in no particular order, so a mutant
-# that a 1 ms test kills often waits for a slow node test first. This runs them in order
-# of their measured duration; the workers fork from this process, so the patch reaches
-# them. It runs in a fresh interpreter that imports nothing from tests/ (pytest imports
-# tests/ from mutants/, and a package already imported from here would clash).
-FASTEST_TESTS_FIRST = """
-import sys
+# The tests written for a module, run first for its mutants: they are the likeliest to
+# kill them, and a survivor is judged mostly by them (see MAX_TESTS_PER_MUTANT).
+OWN_TESTS = {
+    "genparams.runtime.validators": ("tests/runtime/test_validators.py", "tests/runtime/test_edge"),
+    "genparams.runtime.binding": ("tests/runtime/test_commit", "tests/test_runtime_services.py"),
+    "genparams.runtime.tree": ("tests/test_tree_updates.py", "tests/test_commit_records.py"),
+    "genparams.runtime.mapped": ("tests/test_mapped.py",),
+    "genparams.runtime.expressions": ("tests/test_expressions.py", "tests/test_rules"),
+    "genparams.runtime.remote": ("tests/test_remote.py",),
+    "genparams.paramsfile": (
+        "tests/paramsfile/",
+        "tests/test_check_params.py",
+        "tests/test_ros_yaml",
+    ),
+}
+# A mutant that survives would otherwise run every test that calls its function (over
+# 500 node tests for a range check: minutes on a loaded machine). It runs the module's
+# own tests and then the fastest others, this many in all. The cap can only under-count
+# kills (a test past it might have killed a survivor), never invent one.
+MAX_TESTS_PER_MUTANT = 150
+
+# mutmut hands pytest the tests in no particular order, so a mutant a 1 ms test kills
+# often waits for a slow node test first. The patch below orders and caps them; the
+# workers fork from this process, so it reaches them. It runs in a fresh interpreter
+# that imports nothing from tests/ (pytest imports tests/ from mutants/, and a package
+# already imported from here would clash).
+ORDERED_RUN = """
+import os, sys
 from mutmut.runners import harness
 from mutmut.state import state
+own_tests, cap = OWN_TESTS, MAX_TESTS_PER_MUTANT
 plain = harness.PytestRunner._pytest_args_regular_run
 def ordered(self, tests):
+    mutant = os.environ.get("MUTANT_UNDER_TEST", "")
+    own = next((v for k, v in own_tests.items() if mutant.startswith(k + ".")), ())
     durations = state().duration_by_test
-    return plain(self, sorted(tests, key=lambda test: (durations.get(test, 0.0), test)))
+    def key(test):
+        return (not test.startswith(own), durations.get(test, 0.0), test)
+    tests = sorted(tests, key=key)
+    return plain(self, tests[:cap] if mutant and tests else tests)
 harness.PytestRunner._pytest_args_regular_run = ordered
 from mutmut.__main__ import cli
 cli.main(args=sys.argv[1:], standalone_mode=False)
@@ -110,7 +137,10 @@ cli.main(args=sys.argv[1:], standalone_mode=False)
 def mutmut_run(names: list[str]) -> None:
     """``mutmut run NAMES`` (mutmut reads its config from pyproject.toml in the cwd)."""
     if names:
-        command = [sys.executable, "-c", FASTEST_TESTS_FIRST, "run", *names]
+        code = ORDERED_RUN.replace("OWN_TESTS", repr(OWN_TESTS)).replace(
+            "MAX_TESTS_PER_MUTANT", str(MAX_TESTS_PER_MUTANT)
+        )
+        command = [sys.executable, "-c", code, "run", *names]
         subprocess.run(command, cwd=ROOT, check=False)
 
 
