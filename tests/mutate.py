@@ -92,16 +92,18 @@ def accepted() -> dict[str, str]:
 # kill them, and a survivor is judged mostly by them (see MAX_TESTS_PER_MUTANT).
 OWN_TESTS = {
     "genparams.runtime.validators": ("tests/runtime/test_validators.py", "tests/runtime/test_edge"),
-    "genparams.runtime.binding": ("tests/runtime/test_commit", "tests/test_runtime_services.py"),
-    "genparams.runtime.tree": ("tests/test_tree_updates.py", "tests/test_commit_records.py"),
-    "genparams.runtime.mapped": ("tests/test_mapped.py",),
-    "genparams.runtime.expressions": ("tests/test_expressions.py", "tests/test_rules"),
-    "genparams.runtime.remote": ("tests/test_remote.py",),
-    "genparams.paramsfile": (
-        "tests/paramsfile/",
-        "tests/test_check_params.py",
-        "tests/test_ros_yaml",
+    "genparams.runtime.binding": (
+        "tests/runtime/test_commit_semantics.py",
+        "tests/runtime/test_runtime_services.py",
     ),
+    "genparams.runtime.tree": (
+        "tests/runtime/test_tree_updates.py",
+        "tests/runtime/test_commit_records.py",
+    ),
+    "genparams.runtime.mapped": ("tests/runtime/test_mapped.py",),
+    "genparams.runtime.expressions": ("tests/schema/test_expressions.py", "tests/runtime/test_rules"),
+    "genparams.runtime.remote": ("tests/runtime/test_remote.py",),
+    "genparams.paramsfile": ("tests/paramsfile/",),
 }
 # A mutant that survives would otherwise run every test that calls its function (over
 # 500 node tests for a range check: minutes on a loaded machine). It runs the module's
