@@ -101,7 +101,10 @@ OWN_TESTS = {
         "tests/runtime/test_commit_records.py",
     ),
     "genparams.runtime.mapped": ("tests/runtime/test_mapped.py",),
-    "genparams.runtime.expressions": ("tests/schema/test_expressions.py", "tests/runtime/test_rules"),
+    "genparams.runtime.expressions": (
+        "tests/schema/test_expressions.py",
+        "tests/runtime/test_rules",
+    ),
     "genparams.runtime.remote": ("tests/runtime/test_remote.py",),
     "genparams.paramsfile": ("tests/paramsfile/",),
 }
