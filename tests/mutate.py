@@ -114,6 +114,8 @@ OWN_TESTS = {
 # kills (a test past it might have killed a survivor), never invent one.
 MAX_TESTS_PER_MUTANT = 150
 
+# Workers run the same tests at once, with the same node names: each gets a DDS domain
+# of its own (200-231), or a service call could be answered by the other worker's node.
 # mutmut hands pytest the tests in no particular order, so a mutant a 1 ms test kills
 # often waits for a slow node test first. The patch below orders and caps them; the
 # workers fork from this process, so it reaches them. It runs in a fresh interpreter
@@ -127,6 +129,8 @@ own_tests, cap = OWN_TESTS, MAX_TESTS_PER_MUTANT
 plain = harness.PytestRunner._pytest_args_regular_run
 def ordered(self, tests):
     mutant = os.environ.get("MUTANT_UNDER_TEST", "")
+    if mutant:  # a worker: its nodes must not answer the other worker's service calls
+        os.environ["ROS_DOMAIN_ID"] = str(200 + os.getpid() % 32)
     own = next((v for k, v in own_tests.items() if mutant.startswith(k + ".")), ())
     durations = state().duration_by_test
     def key(test):
