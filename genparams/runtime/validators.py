@@ -378,17 +378,18 @@ def _custom(arg: Any, _type: str) -> Custom:
     return Custom(arg)
 
 
-def _compare(rule: str) -> Callable[[Any, str], Validator]:
-    return lambda arg, _type: Compare(rule, _number(arg, rule))
+def _compare(rule: str, arg: Any) -> Compare:
+    # Called per schema entry, not once at import, so the tests exercise (and mutate) it.
+    return Compare(rule, _number(arg, rule))
 
 
 KINDS: dict[str, ValidatorKind] = {
     k.name: k
     for k in (
-        ValidatorKind("gt", NUMERIC, _compare("gt")),
-        ValidatorKind("ge", NUMERIC, _compare("ge")),
-        ValidatorKind("lt", NUMERIC, _compare("lt")),
-        ValidatorKind("le", NUMERIC, _compare("le")),
+        ValidatorKind("gt", NUMERIC, lambda a, _t: _compare("gt", a)),
+        ValidatorKind("ge", NUMERIC, lambda a, _t: _compare("ge", a)),
+        ValidatorKind("lt", NUMERIC, lambda a, _t: _compare("lt", a)),
+        ValidatorKind("le", NUMERIC, lambda a, _t: _compare("le", a)),
         ValidatorKind("bounds", NUMERIC, lambda a, _t: Bounds(*_pair(a, "bounds"))),
         ValidatorKind(
             "element_bounds",
