@@ -209,3 +209,22 @@ def test_bad_arguments_say_why(rule: str, argument: Any, message: str) -> None:
 def test_a_pattern_that_does_not_compile_is_an_argument_error() -> None:
     with pytest.raises(ValidatorArgumentError, match=r"pattern '\(' is not a valid regex: "):
         build_validator("pattern", "(", "string")
+
+
+def test_values_are_shown_whole_up_to_60_characters() -> None:
+    shown = "x" * 58  # its repr, quotes included, is 60 characters
+    assert OneOf(("a",))(shown) == f"must be one of ['a'] (one_of), got {shown!r}"
+    cut = "x" * 59
+    assert OneOf(("a",))(cut) == f"must be one of ['a'] (one_of), got '{'x' * 56}..."
+
+
+def test_int_steps_count_from_the_low_edge() -> None:
+    stepped = RosRange(1, 11, 3, integer=True)
+    assert [stepped(v) is None for v in (1, 4, 7, 10, 11)] == [True] * 5
+    assert stepped(3) == "3 is not on a step: within [1, 11] in steps of 3"
+
+
+def test_doubles_within_the_tolerance_of_either_edge_are_on_it() -> None:
+    bounded = RosRange(1.0, 2.0, 0.0, integer=False)
+    assert bounded(1.0 - 1e-7) is None and bounded(2.0 + 1e-7) is None
+    assert bounded(1.0 - 1e-5) == "0.99999 is out of range: within [1.0, 2.0]"
