@@ -117,3 +117,22 @@ def test_genparams_check_runs_before_a_later_veto(
     (result,) = ros.client(node).set(Parameter("control.pid.kp", value=-1.0))
     assert result.reason == "control.pid.kp: must be >= 0.0 (ge), got -1.0"
     assert calls == ["armed"]
+
+
+def test_a_subscriber_that_raises_is_logged_and_the_others_still_hear(
+    ros: RosHarness, module: types.ModuleType, capfd: pytest.CaptureFixture[str]
+) -> None:
+    node = ros.node(args=SERIAL)
+    cfg = module.CameraDriverParams.declare(node)
+    seen: list[Changes[object]] = []
+
+    def broken(changes: Changes[object]) -> None:
+        raise RuntimeError("subscriber bug")
+
+    cfg.on_change(broken)
+    cfg.on_change(seen.append)
+    (result,) = ros.client(node).set(Parameter("camera.fps", value=12.0))
+    assert result.successful
+    assert cfg.camera.fps == 12.0 and [(c.name, c.new) for c in seen[0]] == [("camera.fps", 12.0)]
+    logged = capfd.readouterr().err
+    assert "on_change callback" in logged and "RuntimeError: subscriber bug" in logged, logged
