@@ -113,7 +113,11 @@ def main() -> int:
         client_node.destroy_node()
         rclpy.shutdown()
         camera.terminate()
-        camera.wait(timeout=10)
+        try:
+            camera.wait(timeout=30)
+        except subprocess.TimeoutExpired:  # never leave the node running behind the demo
+            camera.kill()
+            camera.wait()
 
 
 if __name__ == "__main__":
