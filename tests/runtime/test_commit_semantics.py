@@ -15,7 +15,7 @@ import pytest
 from rcl_interfaces.msg import SetParametersResult
 from rclpy.parameter import Parameter
 
-from genparams.runtime import Changes
+from genparams.runtime import Changes, DetachedSnapshotError
 from tests.support import ROOT, RosHarness, load_generated
 
 SCHEMA = ROOT / "examples" / "camera_node" / "camera_driver.yaml"
@@ -136,3 +136,19 @@ def test_a_subscriber_that_raises_is_logged_and_the_others_still_hear(
     assert cfg.camera.fps == 12.0 and [(c.name, c.new) for c in seen[0]] == [("camera.fps", 12.0)]
     logged = capfd.readouterr().err
     assert "on_change callback" in logged and "RuntimeError: subscriber bug" in logged, logged
+
+
+def test_snapshots_taken_after_a_set_are_still_detached(
+    ros: RosHarness, module: types.ModuleType
+) -> None:
+    node = ros.node(args=SERIAL)
+    cfg = module.CameraDriverParams.declare(node)
+    ros.client(node).set_atomically(
+        Parameter("camera.fps", value=12.0), Parameter("camera.width", value=800)
+    )
+    ros.client(node).set(Parameter("camera.height", value=600))
+    frozen = cfg.snapshot()
+    assert (frozen.camera.fps, frozen.camera.width, frozen.camera.height) == (12.0, 800, 600)
+    assert frozen.snapshot() is frozen
+    with pytest.raises(DetachedSnapshotError):
+        frozen.on_change(print)
