@@ -110,8 +110,8 @@ OWN_TESTS = {
 }
 # A mutant that survives would otherwise run every test that calls its function (over
 # 500 node tests for a range check: minutes on a loaded machine). It runs the module's
-# own tests and then the fastest others, this many in all. The cap can only under-count
-# kills (a test past it might have killed a survivor), never invent one.
+# own tests and then the fastest others, this many in all; `recheck` runs the survivors
+# again with no cap, so a test past it still gets its chance.
 MAX_TESTS_PER_MUTANT = 150
 
 # Workers run the same tests at once, with the same node names: each gets a DDS domain
@@ -143,11 +143,11 @@ cli.main(args=sys.argv[1:], standalone_mode=False)
 """
 
 
-def mutmut_run(names: list[str]) -> None:
+def mutmut_run(names: list[str], cap: int | None = MAX_TESTS_PER_MUTANT) -> None:
     """``mutmut run NAMES`` (mutmut reads its config from pyproject.toml in the cwd)."""
     if names:
         code = ORDERED_RUN.replace("OWN_TESTS", repr(OWN_TESTS)).replace(
-            "MAX_TESTS_PER_MUTANT", str(MAX_TESTS_PER_MUTANT)
+            "MAX_TESTS_PER_MUTANT", str(cap or 1_000_000)
         )
         command = [sys.executable, "-c", code, "run", *names]
         subprocess.run(command, cwd=ROOT, check=False)
@@ -164,7 +164,7 @@ def run(modules: list[str], *, which: str) -> None:
     for module in modules:
         names = [n for n, code in results(module).items() if status(code) == which]
         print(f"{module}: {len(names)} {which} mutants", flush=True)
-        mutmut_run(names)
+        mutmut_run(names, cap=MAX_TESTS_PER_MUTANT if which == "unchecked" else None)
 
 
 def score(counts: Counter[str]) -> float | None:

@@ -13,7 +13,16 @@ import pytest
 from genparams.cli import main
 from genparams.paramsfile.check_params import suggestion
 
-CANDIDATES = ["arm.gain", "base.gain", "camera.fps", "camera.settings.exposure", "robot_name"]
+# drive.fpt and x.settings.exposed are near misses by whole name: a unique leaf must win.
+CANDIDATES = [
+    "arm.gain",
+    "base.gain",
+    "camera.fps",
+    "camera.settings.exposure",
+    "robot_name",
+    "drive.fpt",
+    "x.settings.exposed",
+]
 
 
 @pytest.mark.parametrize(
@@ -23,6 +32,8 @@ CANDIDATES = ["arm.gain", "base.gain", "camera.fps", "camera.settings.exposure",
         ("arm.gian", "arm.gain"),
         ("fps", "camera.fps"),  # the only parameter with this leaf, misplaced
         ("other.fps", "camera.fps"),
+        ("drive.fps", "camera.fps"),  # misplaced: its leaf names one parameter
+        ("x.settings.exposure", "camera.settings.exposure"),
         ("camera.fsp", "camera.fps"),  # misspelt leaf, right namespace
         ("robot_nam", "robot_name"),
         ("q.exposur", "camera.settings.exposure"),  # far as a whole, close by its leaf
