@@ -152,3 +152,20 @@ def test_snapshots_taken_after_a_set_are_still_detached(
     assert frozen.snapshot() is frozen
     with pytest.raises(DetachedSnapshotError):
         frozen.on_change(print)
+
+
+def test_post_set_of_a_request_checked_before_another_commits_its_own_values(
+    ros: RosHarness, module: types.ModuleType
+) -> None:
+    """Two requests interleaved between on-set and post-set (as concurrent sets can be):
+    each post-set commits the values of its own request, never the last one checked."""
+    node = ros.node(args=SERIAL)
+    cfg = module.CameraDriverParams.declare(node)
+    binding = cfg._binding
+    first = [Parameter("camera.fps", value=12.0)]
+    second = [Parameter("camera.width", value=800)]
+    assert binding.on_set(first).successful and binding.on_set(second).successful
+    binding.on_post_set(first)
+    assert (cfg.camera.fps, cfg.camera.width) == (12.0, 640)
+    binding.on_post_set(second)
+    assert (cfg.camera.fps, cfg.camera.width) == (12.0, 800)
