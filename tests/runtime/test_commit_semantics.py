@@ -169,3 +169,18 @@ def test_post_set_of_a_request_checked_before_another_commits_its_own_values(
     assert (cfg.camera.fps, cfg.camera.width) == (12.0, 640)
     binding.on_post_set(second)
     assert (cfg.camera.fps, cfg.camera.width) == (12.0, 800)
+
+
+def test_every_problem_of_a_request_is_named(ros: RosHarness, module: types.ModuleType) -> None:
+    node = ros.node(args=SERIAL)
+    cfg = module.CameraDriverParams.declare(node)
+    result = ros.client(node).set_atomically(
+        Parameter("camera.fps", value=12.0),
+        Parameter("control.pid.kp", value=-1.0),
+        Parameter("camera.encoding", value="yuv"),
+    )
+    assert result.reason == (
+        "control.pid.kp: must be >= 0.0 (ge), got -1.0; "
+        "camera.encoding: must be one of ['rgb8', 'mono8', 'bgr8'] (one_of), got 'yuv'"
+    )
+    assert (cfg.camera.fps, cfg.control.pid.kp) == (30.0, 1.0)
