@@ -71,3 +71,35 @@ def test_names_of_another_shape_are_unknown(
         f"params.yaml:3:5: {name}: unknown parameter (did you mean {meant!r}?): "
         "ROS would ignore it\n",
     )
+
+
+NESTED = """\
+genparams: 1
+name: nest
+parameters:
+  joints: {type: string_array, default: [a]}
+  links: {type: string_array, default: [x]}
+  gains:
+    for_each: joints
+    sub:
+      for_each: links
+      p: {type: double, default: 1.0}
+"""
+
+
+def test_entries_of_nested_groups_name_every_key(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    schema = tmp_path / "nest.yaml"
+    schema.write_text(NESTED, encoding="utf-8")
+    params = tmp_path / "params.yaml"
+    lines = "    gains.b.sub.y.p: 2.0\n    gains.c.sub.y!.p: 2.0\n"
+    params.write_text("/**:\n  ros__parameters:\n" + lines, encoding="utf-8")
+    assert main(["check-params", str(schema), str(params)]) == 1
+    out = capsys.readouterr()
+    assert (out.out + out.err).replace(str(params), "params.yaml") == (
+        "params.yaml:4:5: gains.c.sub.y!.p: unknown parameter: 'y!' cannot be an item of links "
+        "(use letters, digits, '_' and '-'): no entry would ever have this name\n"
+        "params.yaml:3:5: gains.b.sub.y.p: warning: 'b.y' is not among the items of joints, "
+        "links; the node uses this only once they hold it\n"
+    )
