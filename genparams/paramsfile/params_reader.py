@@ -15,6 +15,7 @@ from typing import Any
 
 import yaml
 
+from genparams.paramsfile.rcl_lists import contains_mapping, read_list
 from genparams.paramsfile.ros_yaml import (
     PARAMS_KEY,
     NoValue,
@@ -180,7 +181,9 @@ class _Reader:
                 continue
             key_location = self.document.key_location(key_path)
             value_location = self.document.value_location(key_path)
-            if isinstance(value, (dict, list)) and not value:
+            if contains_mapping(value):
+                self.rcl_list(name, key_path, value, prefix, entries)
+            elif isinstance(value, (dict, list)) and not value:
                 entries.append(ParamEntry(name, None, key_location, value_location, True))
             elif isinstance(value, list):
                 items = self.list_items(value, key_path, name)
@@ -194,6 +197,24 @@ class _Reader:
                 )
             else:
                 entries.append(ParamEntry(name, value, key_location, value_location))
+
+    def rcl_list(
+        self, name: str, path: Path, items: list[Any], prefix: str, entries: list[ParamEntry]
+    ) -> None:
+        """A list holding mappings: read as rcl reads it (see rcl_lists), not as YAML does."""
+        records, problems = read_list(name, path, items, prefix)
+        for where, message in problems:
+            self.problem(self.document.value_location(where), name, message)
+        for record in records:
+            value_path = record.value_path if record.value_path is not None else record.key_path
+            entries.append(
+                ParamEntry(
+                    record.name,
+                    record.value,
+                    self.document.key_location(record.key_path),
+                    self.document.value_location(value_path),
+                )
+            )
 
     def list_items(self, items: list[Any], path: Path, name: str) -> list[Any] | None:
         kinds: list[str] = []
