@@ -126,9 +126,13 @@ def _value(path: Path, value: Any, state: _State) -> None:
         state.seq_type = kind
         record.value, record.value_path = [value], path
     elif kind != state.seq_type:
-        state.problems.append((path, f"a {kind} in a list of {state.seq_type}s: ROS refuses the file"))
+        state.problems.append(
+            (path, f"a {kind} in a list of {state.seq_type}s: ROS refuses the file")
+        )
     elif not isinstance(record.value, list):
-        state.problems.append((path, "rcl adds this value to a list it never started: ROS refuses the file"))
+        state.problems.append(
+            (path, "rcl adds this value to a list it never started: ROS refuses the file")
+        )
     else:
         record.value.append(value)
 
