@@ -76,7 +76,10 @@ def check_files(
     checkers = []
     for bound in bounds:
         checker = SectionChecker(bound.schema, file)
-        checker.run(_own(applied, bound.prefix), [(n, _own(s, bound.prefix)) for n, s in per_node])
+        checker.run(
+            own_sections(applied, bound.prefix),
+            [(n, own_sections(s, bound.prefix)) for n, s in per_node],
+        )
         problems.extend(_prefixed(p, bound.prefix) for p in checker.problems)
         warnings.extend(_prefixed(p, bound.prefix) for p in checker.warnings)
         checkers.append((bound.prefix, checker))
@@ -114,7 +117,7 @@ def _node_sections(
     return union, per_node, skipped_lines
 
 
-def _own(sections: Sequence[Section], prefix: str) -> list[Section]:
+def own_sections(sections: Sequence[Section], prefix: str) -> list[Section]:
     """The sections as a class under ``prefix`` sees them: its entries, names relative."""
     if not prefix:
         return list(sections)

@@ -13,7 +13,6 @@ before it, even when a later file repeats it. ``*`` matches one name token,
 
 from __future__ import annotations
 
-import difflib
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -73,4 +72,20 @@ def near_miss(pattern: str, node: str) -> str | None:
 
 
 def close_names(one: str, other: str) -> bool:
-    return difflib.SequenceMatcher(None, one, other).ratio() >= 0.8
+    """Names one slip apart (two for long names): a typo, a swap of two letters."""
+    allowed = 1 if max(len(one), len(other)) < 8 else 2
+    return edit_distance(one, other) <= allowed
+
+
+def edit_distance(one: str, other: str) -> int:
+    """Edits (insert, delete, replace, swap of neighbours) that turn ``one`` into ``other``."""
+    rows = [list(range(len(other) + 1))]
+    for i, a in enumerate(one, start=1):
+        row = [i]
+        for j, b in enumerate(other, start=1):
+            cost = min(rows[-1][j] + 1, row[j - 1] + 1, rows[-1][j - 1] + (a != b))
+            if i > 1 and j > 1 and a == other[j - 2] and one[i - 2] == b:
+                cost = min(cost, rows[-2][j - 2] + 1)
+            row.append(cost)
+        rows.append(row)
+    return rows[-1][-1]

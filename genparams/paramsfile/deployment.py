@@ -1,0 +1,96 @@
+"""Check a whole bringup params file: every node section against its node's schemas.
+
+The manifest names the nodes that run (exactly, or by a pattern such as
+``/*/controller_manager``). A pattern stands for every node a section of the
+file names that it matches, so one entry covers the namespaced copies of a
+robot. Each node is then checked as check-params checks one node, with the
+sections rcl applies to it. A section that reaches none of these nodes is
+reported: no schema claims it, so nothing checks it, and if its name is a
+typo, ROS ignores it without a word.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from genparams.paramsfile.check_params import Bound, Report, check_files
+from genparams.paramsfile.manifest import NodeEntry
+from genparams.paramsfile.node_sections import near_miss
+from genparams.paramsfile.params_reader import ParamsDocument
+from genparams.paramsfile.ros_yaml import WILDCARD_ANY, WILDCARD_ONE, node_matches
+from genparams.schema.errors import SchemaProblem
+
+
+@dataclass(frozen=True)
+class Deployed:
+    """One manifest entry with its schemas loaded."""
+
+    entry: NodeEntry
+    bounds: tuple[Bound, ...]
+
+
+def check_deployment(
+    deployed: Sequence[Deployed], document: ParamsDocument, known: Sequence[str] = ()
+) -> tuple[Report, list[str]]:
+    """Every node of ``document`` checked against its schemas; and which node got which check."""
+    problems: set[SchemaProblem] = set(document.problems)
+    warnings: set[SchemaProblem] = set()
+    checked: list[str] = []
+    nodes = _nodes(deployed, document)
+    for node, item in nodes:
+        report = check_files(item.bounds, [document], [node], (*known, *item.entry.known))
+        problems.update(report.problems)
+        warnings.update(report.warnings)
+        schemas = (
+            ", ".join(
+                f"{b.schema.source_name}{'@' + b.prefix if b.prefix else ''}" for b in item.bounds
+            )
+            or "no schema"
+        )
+        checked.append(f"{node}: checked against {schemas} (manifest entry {item.entry.node})")
+    names = [node for node, _ in nodes]
+    for section in document.sections:
+        if any(node_matches(section.node, node) for node in names):
+            continue
+        problems.add(
+            SchemaProblem(
+                section.node_location,
+                section.node,
+                f"no node of the manifest gets this section{_hint(section.node, names)}: "
+                "nothing checks it, and ROS applies it to no node listed",
+            )
+        )
+    return Report(tuple(sorted(problems)), tuple(sorted(warnings))), checked
+
+
+def _nodes(deployed: Sequence[Deployed], document: ParamsDocument) -> list[tuple[str, Deployed]]:
+    """The nodes to check: exact names, and each section name a pattern entry matches."""
+    found: dict[str, Deployed] = {}
+    for item in deployed:
+        pattern = item.entry.node
+        if not _is_pattern(pattern):
+            found.setdefault(pattern, item)
+            continue
+        named = [
+            s.node
+            for s in document.sections
+            if not _is_pattern(s.node) and node_matches(pattern, s.node)
+        ]
+        # No concrete section: the pattern itself, so /** sections still reach it.
+        reached = any(node_matches(s.node, pattern) for s in document.sections)
+        for node in named or ([pattern] if reached else []):
+            found.setdefault(node, item)
+    return list(found.items())
+
+
+def _is_pattern(name: str) -> bool:
+    return any(t in (WILDCARD_ONE, WILDCARD_ANY) for t in name.split("/"))
+
+
+def _hint(section: str, nodes: list[str]) -> str:
+    for node in nodes:
+        reason = near_miss(section, node)
+        if reason is not None:
+            return f" (did you mean {node}? {reason})"
+    return ""
