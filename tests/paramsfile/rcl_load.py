@@ -1,0 +1,57 @@
+"""What a real node gets from rcl: overrides parsed from command-line args by rcl itself.
+
+Each load gets a fresh Context initialised with the args (as ``ros2 run ...
+--ros-args --params-file F -p x:=1`` would), and a node that declares every
+override it is given, so rcl's own file parsing, wildcard matching and order
+decide. Nothing here re-implements them.
+"""
+
+from __future__ import annotations
+
+import array
+from pathlib import Path
+from typing import Any
+
+import rclpy
+from rclpy.context import Context
+from rclpy.node import Node
+
+
+class Refused(Exception):
+    """rcl or rclpy refused the arguments or the node."""
+
+
+def plain(value: Any) -> Any:
+    """A parameter value as a comparable Python value (arrays as lists)."""
+    if isinstance(value, (array.array, tuple, list)):
+        return list(value)
+    return value
+
+
+def overrides(node: str, args: list[str]) -> dict[str, Any]:
+    """The overrides node ``/ns/name`` receives from ``--ros-args *args``; raises Refused."""
+    context = Context()
+    try:
+        rclpy.init(args=["--ros-args", *args], context=context)
+    except Exception as exc:  # rcl's parse errors come as RCLError / invalid-args errors
+        raise Refused(str(exc)) from exc
+    namespace, _, name = node.rpartition("/")
+    try:
+        ros_node = Node(
+            name,
+            namespace=namespace or "/",
+            context=context,
+            automatically_declare_parameters_from_overrides=True,
+        )
+    except Exception as exc:
+        raise Refused(f"{type(exc).__name__}: {exc}") from exc
+    else:
+        values = {name: plain(p.value) for name, p in ros_node._parameter_overrides.items()}
+        ros_node.destroy_node()
+        return values
+    finally:
+        rclpy.shutdown(context=context)
+
+
+def file_args(*files: Path) -> list[str]:
+    return [arg for f in files for arg in ("--params-file", str(f))]
