@@ -57,7 +57,8 @@ def check_deployment(
             SchemaProblem(
                 section.node_location,
                 section.node,
-                f"no node of the manifest gets this section{_hint(section.node, names)}: "
+                f"no node of the manifest gets this section"
+                f"{_hint(section.node, [*names, *(d.entry.node for d in deployed)])}: "
                 "nothing checks it, and ROS applies it to no node listed",
             )
         )

@@ -53,21 +53,23 @@ def sections_for(
 
 
 def near_miss(pattern: str, node: str) -> str | None:
-    """Why a section named ``pattern`` looks meant for ``node`` but misses it, or None."""
+    """Why a section named ``pattern`` looks meant for ``node`` but misses it, or None.
+
+    ``node`` may be a pattern itself (a manifest's ``/*/camera``).
+    """
     pattern, node = absolute(pattern), absolute(node)
     tokens, wanted = pattern[1:].split("/"), node[1:].split("/")
     if WILDCARD_ANY in tokens or WILDCARD_ONE in tokens[-1:]:
         return None  # a pattern for many nodes: missing one is its purpose
     name, node_name = tokens[-1], wanted[-1]
-    if name == node_name:
-        namespace = "/" + "/".join(tokens[:-1])
-        return f"same node name in namespace {namespace}, but {node} runs in " + (
-            "/" + "/".join(wanted[:-1])
-        )
-    if len(tokens) == len(wanted) and close_names(name, node_name):
-        same_ns = all(t in (p, WILDCARD_ONE) for t, p in zip(tokens[:-1], wanted[:-1], strict=True))
-        if same_ns:
-            return f"node name {name!r} is close to {node_name!r}: a typo?"
+    namespace, node_namespace = "/" + "/".join(tokens[:-1]), "/" + "/".join(wanted[:-1])
+    same_namespace = node_matches(node_namespace, namespace) or node_matches(
+        namespace, node_namespace
+    )
+    if name == node_name and not same_namespace:
+        return f"same node name in namespace {namespace}, but {node} runs in {node_namespace}"
+    if name != node_name and same_namespace and close_names(name, node_name):
+        return f"node name {name!r} is close to {node_name!r}: a typo?"
     return None
 
 
