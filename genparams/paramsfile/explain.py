@@ -26,9 +26,9 @@ from genparams.paramsfile.check_params import (
 )
 from genparams.paramsfile.node_sections import Skipped, sections_for
 from genparams.paramsfile.params_reader import ParamEntry, ParamsDocument, Section
-from genparams.paramsfile.ros_yaml import NoValue, absolute, node_pattern_problem, ros_scalar
+from genparams.paramsfile.ros_yaml import NoValue, absolute, ros_scalar
 from genparams.paramsfile.section_checker import SectionChecker
-from genparams.runtime.naming import join_prefix
+from genparams.runtime.naming import is_ros_token, join_prefix
 from genparams.runtime.spec import CompiledParam
 from genparams.runtime.types import ValueTypeError
 from genparams.schema.errors import Location
@@ -95,8 +95,9 @@ def _split_rule(rule: str) -> tuple[str, str]:
     node = target.rpartition(":")[0]
     if not sep or not target.rpartition(":")[2]:
         raise RuleError(f"-p {rule!r}: expected NAME:=VALUE or NODE:NAME:=VALUE")
-    if node and node_pattern_problem(node) is not None:
-        raise RuleError(f"-p {rule!r}: invalid node name {node!r}")
+    if node and not is_ros_token(node):
+        # rcl takes one plain node name here: no namespace, no wildcard.
+        raise RuleError(f"-p {rule!r}: the node is one name, without namespace or wildcard")
     return target, value
 
 

@@ -120,13 +120,25 @@ class _Reader:
         self.node_level(data, (), ())
 
     def node_level(self, mapping: dict[str, Any], path: Path, names: tuple[str, ...]) -> None:
+        params_seen = False
         for key, value in mapping.items():
             key_path = (*path, key)
             where = self.document.key_location(key_path)
             # ROS compares only the start of the key with ros__parameters.
             if key.startswith(PARAMS_KEY):
                 self.section(key_path, names, value)
-            elif _looks_like_params_key(key):
+                params_seen = True
+                continue
+            if params_seen and isinstance(value, dict):
+                # rcl closes the node name at ros__parameters: a node nested after it
+                # loses its namespace, and rcl fails on its first parameter.
+                self.problem(
+                    where,
+                    key,
+                    f"a node nested after {PARAMS_KEY} of {absolute('/'.join(names))}: "
+                    f"ROS refuses the file (write the nested nodes before {PARAMS_KEY})",
+                )
+            if _looks_like_params_key(key):
                 self.problem(
                     where,
                     key,

@@ -16,8 +16,10 @@ import rclpy
 from rclpy.context import Context
 from rclpy.node import Node
 
+from genparams.runtime import ParameterDeclarationError
 
-class Refused(Exception):
+
+class RclRefusedError(Exception):
     """rcl or rclpy refused the arguments or the node."""
 
 
@@ -34,7 +36,7 @@ def overrides(node: str, args: list[str]) -> dict[str, Any]:
     try:
         rclpy.init(args=["--ros-args", *args], context=context)
     except Exception as exc:  # rcl's parse errors come as RCLError / invalid-args errors
-        raise Refused(str(exc)) from exc
+        raise RclRefusedError(str(exc)) from exc
     namespace, _, name = node.rpartition("/")
     try:
         ros_node = Node(
@@ -44,7 +46,7 @@ def overrides(node: str, args: list[str]) -> dict[str, Any]:
             automatically_declare_parameters_from_overrides=True,
         )
     except Exception as exc:
-        raise Refused(f"{type(exc).__name__}: {exc}") from exc
+        raise RclRefusedError(f"{type(exc).__name__}: {exc}") from exc
     else:
         values = {name: plain(p.value) for name, p in ros_node._parameter_overrides.items()}
         ros_node.destroy_node()
@@ -55,3 +57,25 @@ def overrides(node: str, args: list[str]) -> dict[str, Any]:
 
 def file_args(*files: Path) -> list[str]:
     return [arg for f in files for arg in ("--params-file", str(f))]
+
+
+def started(node: str, args: list[str], classes: list[tuple[type, str]]) -> dict[str, Any] | None:
+    """Values of a real node that declares ``classes`` (with prefixes); None if it refuses.
+
+    The node does not declare overrides automatically: what no class declares is
+    ignored, as on a robot.
+    """
+    context = Context()
+    rclpy.init(args=["--ros-args", *args], context=context)
+    namespace, _, name = node.rpartition("/")
+    ros_node = Node(name, namespace=namespace or "/", context=context)
+    try:
+        for params_class, prefix in classes:
+            params_class.declare(ros_node, prefix=prefix)  # type: ignore[attr-defined]
+    except ParameterDeclarationError:
+        return None
+    else:
+        return {n: plain(p.value) for n, p in ros_node._parameters.items()}
+    finally:
+        ros_node.destroy_node()
+        rclpy.shutdown(context=context)

@@ -17,7 +17,7 @@ import pytest
 
 from genparams.paramsfile.node_sections import sections_for
 from genparams.paramsfile.params_reader import read_params_file
-from tests.paramsfile.rcl_load import Refused, file_args, overrides, plain
+from tests.paramsfile.rcl_load import RclRefusedError, file_args, overrides, plain
 
 CORPUS = Path(__file__).parent / "corpus"
 FILES = sorted(CORPUS.glob("*/*/params/*.yaml"))
@@ -61,7 +61,7 @@ def test_every_node_of_a_real_file_gets_what_rcl_gives(path: Path) -> None:
     for node in nodes:
         try:
             real = overrides(node, file_args(path))
-        except Refused as exc:
+        except RclRefusedError as exc:
             pytest.fail(f"rcl refuses {path.name} for {node}: {exc}")
         ours = genparams_values(path, node)
         assert ours.keys() == real.keys(), node
