@@ -57,8 +57,5 @@ def load_bounds(specs: list[tuple[Path, str]]) -> list[Bound] | None:
 def _overlap(one: Bound, other: Bound) -> str:
     """A parameter both classes would declare, or ""."""
     mine = {join_prefix(one.prefix, p.ros_name) for p in one.schema.parameters}
-    for p in other.schema.parameters:
-        name = join_prefix(other.prefix, p.ros_name)
-        if name in mine:
-            return name
-    return ""
+    theirs = {join_prefix(other.prefix, p.ros_name) for p in other.schema.parameters}
+    return min(mine & theirs, default="")

@@ -195,3 +195,14 @@ def test_explain_matches_a_real_node(node: str, inputs: str, tmp_path: Path) -> 
     for name, row in rows.items():
         if row.owner == "schema":
             assert _same(plain(row.value), values[name]), name
+
+
+def test_a_list_of_mappings_is_read_as_rcl_reads_it(capsys: pytest.CaptureFixture[str]) -> None:
+    """example_10's gpio_controller: command_interfaces: {vacuum: [{interfaces: [..]}]}."""
+    file = HERE.parent / "corpus" / "ros2_control_demos" / "example_10" / "params"
+    schema = str(SCHEMAS / "gpio_command_controller.yaml")
+    node = ["--node", "/gpio_controller", *CONTROLLER]
+    code, out = run(capsys, "check-params", schema, str(file / "rrbot_controllers.yaml"), *node)
+    assert (code, out) == (0, [])
+    real = overrides("/gpio_controller", ["--params-file", str(file / "rrbot_controllers.yaml")])
+    assert real["command_interfaces.flange_vacuum.interfaces"] == ["vacuum"]
