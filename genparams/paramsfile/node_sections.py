@@ -67,10 +67,20 @@ def near_miss(pattern: str, node: str) -> str | None:
         namespace, node_namespace
     )
     if name == node_name and not same_namespace:
-        return f"same node name in namespace {namespace}, but {node} runs in {node_namespace}"
-    if name != node_name and same_namespace and close_names(name, node_name):
+        if namespace == "/" or _typo(namespace, node_namespace):
+            return f"same node name in namespace {namespace}, but {node} runs in {node_namespace}"
+        return None
+    if name != node_name and same_namespace and _typo(name, node_name):
         return f"node name {name!r} is close to {node_name!r}: a typo?"
     return None
+
+
+def _typo(written: str, meant: str) -> bool:
+    """Close, and not numbered copies (robot_1 and robot_2, joint1 and joint2 are both real)."""
+    numbered = len(written) == len(meant) and all(
+        a == b or (a.isdigit() and b.isdigit()) for a, b in zip(written, meant, strict=True)
+    )
+    return close_names(written, meant) and not numbered
 
 
 def close_names(one: str, other: str) -> bool:

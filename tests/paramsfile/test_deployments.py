@@ -83,8 +83,8 @@ def test_one_node_of_a_shared_file(capsys: pytest.CaptureFixture[str]) -> None:
     assert [line.split(": ", 1)[1] for line in out] == [
         "/**/controller_manager: skipped: for another node "
         "(not /robot_1/forward_position_controller)",
-        "/robot_2/forward_position_controller: skipped: same node name in namespace /robot_2, "
-        "but /robot_1/forward_position_controller runs in /robot_1",
+        "/robot_2/forward_position_controller: skipped: for another node "
+        "(not /robot_1/forward_position_controller)",
         "/robot_2/joint_state_broadcaster: skipped: for another node "
         "(not /robot_1/forward_position_controller)",
         "/robot_1/bicycle_steering_controller: skipped: for another node "
