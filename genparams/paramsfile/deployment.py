@@ -21,6 +21,8 @@ from genparams.paramsfile.params_reader import ParamsDocument
 from genparams.paramsfile.ros_yaml import WILDCARD_ANY, WILDCARD_ONE, node_matches
 from genparams.schema.errors import SchemaProblem
 
+ALL_NODES = "/**"
+
 
 @dataclass(frozen=True)
 class Deployed:
@@ -66,21 +68,25 @@ def check_deployment(
 
 
 def _nodes(deployed: Sequence[Deployed], document: ParamsDocument) -> list[tuple[str, Deployed]]:
-    """The nodes to check: exact names, and each section name a pattern entry matches."""
+    """The nodes this file configures: those a section names, beyond ``/**`` (every node).
+
+    A manifest serves many files: a node none of this file's sections names is
+    not configured here, so its required parameters are not this file's to give.
+    An exact entry is such a node when a section matches it; a pattern entry
+    stands for each section name it matches (or for itself, when sections are
+    patterns too, as in ``/**/controller_manager``).
+    """
+    named = [s.node for s in document.sections if s.node != ALL_NODES]
     found: dict[str, Deployed] = {}
     for item in deployed:
         pattern = item.entry.node
         if not _is_pattern(pattern):
-            found.setdefault(pattern, item)
+            if any(node_matches(section, pattern) for section in named):
+                found.setdefault(pattern, item)
             continue
-        named = [
-            s.node
-            for s in document.sections
-            if not _is_pattern(s.node) and node_matches(pattern, s.node)
-        ]
-        # No concrete section: the pattern itself, so /** sections still reach it.
-        reached = any(node_matches(s.node, pattern) for s in document.sections)
-        for node in named or ([pattern] if reached else []):
+        concrete = [n for n in named if not _is_pattern(n) and node_matches(pattern, n)]
+        reached = any(node_matches(section, pattern) for section in named)
+        for node in concrete or ([pattern] if reached else []):
             found.setdefault(node, item)
     return list(found.items())
 
