@@ -41,7 +41,7 @@ def run(args: argparse.Namespace) -> int:
     manifest = _manifest(args)
     if manifest is None:
         return 2
-    deployed = _deployed(manifest)
+    deployed = deployed_schemas(manifest)
     if deployed is None:
         return 2
     code = 0
@@ -94,7 +94,7 @@ def _manifest(args: argparse.Namespace) -> Manifest | None:
     return Manifest(tuple(entries), known)
 
 
-def _deployed(manifest: Manifest) -> list[Deployed] | None:
+def deployed_schemas(manifest: Manifest) -> list[Deployed] | None:
     cache: dict[Path, Schema] = {}
     deployed = []
     for entry in manifest.nodes:

@@ -39,7 +39,7 @@ def check_deployment(
     problems: set[SchemaProblem] = set(document.problems)
     warnings: set[SchemaProblem] = set()
     checked: list[str] = []
-    nodes = _nodes(deployed, document)
+    nodes = configured_nodes(deployed, document)
     for node, item in nodes:
         report = check_files(item.bounds, [document], [node], (*known, *item.entry.known))
         problems.update(report.problems)
@@ -67,7 +67,9 @@ def check_deployment(
     return Report(tuple(sorted(problems)), tuple(sorted(warnings))), checked
 
 
-def _nodes(deployed: Sequence[Deployed], document: ParamsDocument) -> list[tuple[str, Deployed]]:
+def configured_nodes(
+    deployed: Sequence[Deployed], document: ParamsDocument
+) -> list[tuple[str, Deployed]]:
     """The nodes this file configures: those a section names, beyond ``/**`` (every node).
 
     A manifest serves many files: a node none of this file's sections names is
