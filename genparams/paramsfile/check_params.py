@@ -64,12 +64,20 @@ def check_files(
     documents: Sequence[ParamsDocument],
     nodes: Sequence[str] = (),
     known: Sequence[str] = (),
+    *,
+    near_misses: bool = True,
 ) -> Report:
-    """Check params files given in this order (as rcl gets them) for ``nodes``."""
+    """Check params files given in this order (as rcl gets them) for ``nodes``.
+
+    A skipped section that looks meant for one of ``nodes`` (a typo in its name
+    or namespace) is a warning, unless ``near_misses`` is False (the caller
+    reports unclaimed sections itself).
+    """
     problems: list[SchemaProblem] = [p for d in documents for p in d.problems]
-    warnings: list[SchemaProblem] = []
     files = [d.sections for d in documents]
-    applied, per_node, skipped = _node_sections(files, nodes)
+    applied, per_node, skipped, warnings = _node_sections(files, nodes)
+    if not near_misses:
+        warnings = []
     if any(d.problems and not d.sections for d in documents):
         per_node = []  # nothing could be read: a list of every required parameter adds only noise
     file = documents[0].file if documents else "-"
@@ -94,27 +102,35 @@ def check_files(
 
 def _node_sections(
     files: Sequence[Sequence[Section]], nodes: Sequence[str]
-) -> tuple[list[Section], list[tuple[str, list[Section]]], list[SchemaProblem]]:
-    """Sections that reach any of ``nodes``; each node's own; the skipped ones, explained."""
+) -> tuple[
+    list[Section], list[tuple[str, list[Section]]], list[SchemaProblem], list[SchemaProblem]
+]:
+    """Sections that reach any of ``nodes``; each node's own; the skipped ones; near misses."""
     if not nodes:
         every = rcl_order(files)
-        return every, [("", every)], []
+        return every, [("", every)], [], []
     per_node = []
-    reasons: dict[int, str] = {}
+    reasons: dict[int, tuple[str, str]] = {}  # section -> (node it near-misses or "", reason)
     for node in nodes:
         applied, skipped = sections_for(files, node)
         per_node.append((node, applied))
         for skip in skipped:
-            reasons.setdefault(id(skip.section), skip.reason)
+            if skip.near_miss or id(skip.section) not in reasons:
+                reasons[id(skip.section)] = (node if skip.near_miss else "", skip.reason)
     reached = {id(s) for _, applied in per_node for s in applied}
     ordered = rcl_order(files)
     union = [s for s in ordered if id(s) in reached]
-    skipped_lines = [
-        SchemaProblem(s.node_location, s.node, f"skipped: {reasons[id(s)]}")
-        for s in ordered
-        if id(s) not in reached
-    ]
-    return union, per_node, skipped_lines
+    skipped_lines, near = [], []
+    for section in (s for s in ordered if id(s) not in reached):
+        node, reason = reasons[id(section)]
+        if node:
+            message = f"warning: ROS applies this section to another node, not {node}: {reason}"
+            near.append(SchemaProblem(section.node_location, section.node, message))
+        else:
+            skipped_lines.append(
+                SchemaProblem(section.node_location, section.node, f"skipped: {reason}")
+            )
+    return union, per_node, skipped_lines, near
 
 
 def own_sections(sections: Sequence[Section], prefix: str) -> list[Section]:

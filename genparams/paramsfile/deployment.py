@@ -41,7 +41,9 @@ def check_deployment(
     checked: list[str] = []
     nodes = configured_nodes(deployed, document)
     for node, item in nodes:
-        report = check_files(item.bounds, [document], [node], (*known, *item.entry.known))
+        report = check_files(
+            item.bounds, [document], [node], (*known, *item.entry.known), near_misses=False
+        )
         problems.update(report.problems)
         warnings.update(report.warnings)
         schemas = (

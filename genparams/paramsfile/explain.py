@@ -143,7 +143,7 @@ def explain(
     for row in rows.values():
         if row.name not in owned:
             row.owner = _owner(row.name, known)
-    report = check_files(bounds, documents, [node], known)
+    report = check_files(bounds, documents, [node], known, near_misses=False)
     return Explanation(
         node,
         tuple(rows.values()),

@@ -206,3 +206,15 @@ def test_a_list_of_mappings_is_read_as_rcl_reads_it(capsys: pytest.CaptureFixtur
     assert (code, out) == (0, [])
     real = overrides("/gpio_controller", ["--params-file", str(file / "rrbot_controllers.yaml")])
     assert real["command_interfaces.flange_vacuum.interfaces"] == ["vacuum"]
+
+
+def test_a_section_meant_for_the_node_is_a_warning(capsys: pytest.CaptureFixture[str]) -> None:
+    schema = str(SCHEMAS / "forward_command_controller.yaml")
+    node = ["--node", "/robot_2/forward_position_controller", *CONTROLLER]
+    code, out = run(capsys, "check-params", schema, str(HERE / "bringup_mistakes.yaml"), *node)
+    assert code == 0  # a warning: the section may be another node's
+    assert [line.split(": ", 1)[1] for line in out] == [
+        "/robot_2/forward_positon_controller: warning: ROS applies this section to another node, "
+        "not /robot_2/forward_position_controller: node name 'forward_positon_controller' is "
+        "close to 'forward_position_controller': a typo?"
+    ]
