@@ -51,7 +51,7 @@ class Row:
     type_name: str  # the schema's type, "" when no schema owns the parameter
     source: Source | None  # None: required and not set
     shadowed: list[Source] = field(default_factory=list)
-    owner: str = "schema"  # or "rclpy", "known" (other code), "nobody" (ROS ignores it)
+    owner: str = "schema"  # or "rclpy", "known" (other code), "nobody" (ignored), "unchecked"
 
 
 @dataclass(frozen=True)
@@ -142,7 +142,9 @@ def explain(
             _apply(rows, owned, section, entry)
     for row in rows.values():
         if row.name not in owned:
-            row.owner = _owner(row.name, known)
+            row.owner = _owner(row.name, known) if bounds else "unchecked"
+    if not bounds:
+        known = ["*"]  # no schema: nothing to call unknown, only what rcl refuses
     report = check_files(bounds, documents, [node], known, near_misses=False)
     return Explanation(
         node,

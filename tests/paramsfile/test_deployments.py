@@ -218,3 +218,16 @@ def test_a_section_meant_for_the_node_is_a_warning(capsys: pytest.CaptureFixture
         "not /robot_2/forward_position_controller: node name 'forward_positon_controller' is "
         "close to 'forward_position_controller': a typo?"
     ]
+
+
+def test_a_bad_manifest_is_bad_input(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    manifest = tmp_path / "manifest.yaml"
+    manifest.write_text(
+        "genparams_deployment: 1\nnodes:\n  /robot/cam:\n    schemas: [cam.yaml]\n    knwon: [type]\n",
+        encoding="utf-8",
+    )
+    code = main(["check-deployment", "--manifest", str(manifest), str(HERE / "bringup.yaml")])
+    assert code == 2
+    assert f"{manifest}:5:5: nodes./robot/cam.knwon: unknown key 'knwon'" in capsys.readouterr().err
+    assert main(["check-deployment", str(HERE / "bringup.yaml"), "--map", "/robot/cam"]) == 2
+    assert main(["explain", "/robot/cam", "-p", "ns/cam:fps:=1.0"]) == 2
