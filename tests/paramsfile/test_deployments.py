@@ -223,7 +223,8 @@ def test_a_section_meant_for_the_node_is_a_warning(capsys: pytest.CaptureFixture
 def test_a_bad_manifest_is_bad_input(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     manifest = tmp_path / "manifest.yaml"
     manifest.write_text(
-        "genparams_deployment: 1\nnodes:\n  /robot/cam:\n    schemas: [cam.yaml]\n    knwon: [type]\n",
+        "genparams_deployment: 1\nnodes:\n  /robot/cam:\n"
+        "    schemas: [cam.yaml]\n    knwon: [type]\n",
         encoding="utf-8",
     )
     code = main(["check-deployment", "--manifest", str(manifest), str(HERE / "bringup.yaml")])
