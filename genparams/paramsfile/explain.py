@@ -131,7 +131,9 @@ def explain(
     applied, skipped = sections_for(files, node)
     owned = _owned(bounds, applied)
     rows: dict[str, Row] = {}
-    for name, (param, _prefix) in owned.items():
+    for name, (param, current) in owned.items():
+        if name != current:
+            continue  # an old name
         if param.spec.required:
             rows[name] = Row(name, None, param.type.name, None)
         else:
@@ -141,7 +143,7 @@ def explain(
         for entry in section.entries:
             _apply(rows, owned, section, entry)
     for row in rows.values():
-        if row.name not in owned:
+        if row.name not in owned or row.type_name == "":
             row.owner = _owner(row.name, known) if bounds else "unchecked"
     if not bounds:
         known = ["*"]  # no schema: nothing to call unknown, only what rcl refuses
@@ -158,14 +160,20 @@ def explain(
 def _owned(
     bounds: Sequence[Bound], applied: Sequence[Section]
 ) -> dict[str, tuple[CompiledParam, str]]:
-    """Every parameter the schemas declare on the node (mapped entries expanded), full names."""
+    """Full name -> (parameter, its current full name), for every parameter and old name.
+
+    Mapped entries are expanded from the items the sections give.
+    """
     owned: dict[str, tuple[CompiledParam, str]] = {}
     for bound in bounds:
         checker = SectionChecker(bound.schema, "")
-
         checker.run(own_sections(applied, bound.prefix), [])
         for name, param in checker.params.items():
-            owned[join_prefix(bound.prefix, name)] = (param, bound.prefix)
+            full = join_prefix(bound.prefix, name)
+            owned[full] = (param, full)
+        # An old name (a renamed parameter) gives the current one its value.
+        for old, current in checker.compiled.aliases.items():
+            owned[join_prefix(bound.prefix, old)] = owned[join_prefix(bound.prefix, current)]
     return owned
 
 
@@ -186,15 +194,17 @@ def _apply(
         text = f"-p (rule {where.line}, for {section.node})"
     else:
         text = f"{where.file}:{where.line}:{where.column} ({section.node})"
-    row = rows.get(entry.name)
     value = entry.value
-    if entry.name in owned:
+    name = entry.name
+    if name in owned:
+        param, name = owned[name]  # the current name of a renamed parameter
         try:
-            value = owned[entry.name][0].type.from_ros(entry.value)
+            value = param.type.from_ros(entry.value)
         except ValueTypeError:
             return  # the node refuses it: listed with the problems, the earlier value stays
+    row = rows.get(name)
     if row is None:
-        row = rows[entry.name] = Row(entry.name, value, "", None)
+        row = rows[name] = Row(name, value, "", None)
     elif row.source is not None:
         row.shadowed.append(row.source)
     row.value, row.source = value, Source(text, value)
