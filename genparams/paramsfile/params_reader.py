@@ -101,6 +101,8 @@ class _Reader:
     document: LoadedDocument
     sections: list[Section] = field(default_factory=list)
     problems: list[SchemaProblem] = field(default_factory=list)
+    # In the section being read: (entries before and with it, where, name) of each {}.
+    empty_mappings: list[tuple[int, Location, str]] = field(default_factory=list)
 
     def problem(self, location: Location, key: str, message: str) -> None:
         self.problems.append(SchemaProblem(location, key, message))
@@ -178,18 +180,42 @@ class _Reader:
             )
             return
         entries: list[ParamEntry] = []
+        self.empty_mappings = []
         self.parameters(value, key_path, "", entries)
+        for count, where, name in self.empty_mappings:
+            if count < len(entries):
+                # rcl closes one namespace too many at "{}": the keys after it land
+                # outside ros__parameters, where rcl refuses values.
+                self.problem(
+                    where,
+                    name,
+                    "an empty mapping {} before other keys: ROS refuses the file "
+                    "(leave the key out, or move it last)",
+                )
         self.sections.append(Section(node, node_location, where, tuple(entries)))
         self.check_repeats(entries)
 
     def parameters(
         self, mapping: dict[str, Any], path: Path, prefix: str, entries: list[ParamEntry]
     ) -> None:
+        meant = prefix  # the namespace a reader expects; rcl's may drift from it
         for key, value in mapping.items():
             key_path = (*path, key)
             name = f"{prefix}.{key}" if prefix else key
+            if prefix != meant:
+                expected = f"{meant}.{key}"
+                self.problem(
+                    self.document.key_location(key_path),
+                    expected,
+                    f"ROS reads this key as {name!r}: a dotted key holding a mapping above "
+                    "it shifts the names after it (nest the keys instead of dotting them)",
+                )
             if isinstance(value, dict) and value:
                 self.parameters(value, key_path, name, entries)
+                # rcl leaves a nested mapping by dropping the last dotted token of its
+                # name: after "b.c: {...}" under "a", the next key is "a.b.<key>".
+                if prefix:
+                    prefix = name.rpartition(".")[0]
                 continue
             key_location = self.document.key_location(key_path)
             value_location = self.document.value_location(key_path)
@@ -197,6 +223,8 @@ class _Reader:
                 self.rcl_list(name, key_path, value, prefix, entries)
             elif isinstance(value, (dict, list)) and not value:
                 entries.append(ParamEntry(name, None, key_location, value_location, True))
+                if isinstance(value, dict):
+                    self.empty_mappings.append((len(entries), value_location, name))
             elif isinstance(value, list):
                 items = self.list_items(value, key_path, name)
                 if items is not None:
