@@ -62,3 +62,13 @@ def anchors(text: str) -> set[str]:
 def shell_lines(body: str) -> list[str]:
     """The lines of a shell block, with backslash continuations joined."""
     return body.replace("\\\n", " ").splitlines()
+
+
+_REPO_PATH = re.compile(
+    r"(?<![\w./-])((?:tests|examples|genparams|bench|docs|schemas|templates)/[\w./-]*\w)"
+)
+
+
+def repository_paths(text: str) -> set[str]:
+    """Paths into the repository that a page names (in code text, commands or links)."""
+    return {m[1] for m in _REPO_PATH.finditer(text)}

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.docs_site.pages import DOCS, README, anchors, blocks, links, pages
+from tests.docs_site.pages import DOCS, README, anchors, blocks, links, pages, repository_paths
 
 
 def test_readme_is_short() -> None:
@@ -38,3 +38,13 @@ def test_relative_links_resolve(page: Path) -> None:
         elif anchor and anchor not in anchors(file.read_text(encoding="utf-8")):
             problems.append(f"{target}: no such section")
     assert not problems, problems
+
+
+@pytest.mark.parametrize("page", pages(), ids=lambda page: page.name)
+def test_named_repository_files_exist(page: Path) -> None:
+    """Files the page names as code text (`tests/runtime/test_mapped.py`) were not moved away."""
+    root = README.parent
+    named = repository_paths(page.read_text(encoding="utf-8"))
+    # Paths written as patterns (`tests/bad_schemas/NAME.yaml`) name no one file.
+    missing = {path for path in named if not (root / path).exists() and "NAME" not in path}
+    assert not missing, sorted(missing)
