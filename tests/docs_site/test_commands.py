@@ -21,6 +21,8 @@ import pytest
 from tests.docs_site.pages import Block, blocks, pages, shell_lines
 from tests.support import ROOT
 
+pytestmark = pytest.mark.docs
+
 _GENPARAMS = re.compile(r"(?:\.\./)*\.venv/bin/genparams")
 # A trailing comment that ends with the exit code the command is shown to give.
 _SHOWN_EXIT = re.compile(r"#.*\bexit (\d)\s*$")

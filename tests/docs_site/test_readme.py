@@ -8,6 +8,8 @@ import pytest
 
 from tests.docs_site.pages import DOCS, README, anchors, blocks, links, pages, repository_paths
 
+pytestmark = pytest.mark.docs
+
 
 def test_readme_is_short() -> None:
     lines = README.read_text(encoding="utf-8").splitlines()
