@@ -61,7 +61,8 @@ def test_shown_commands_run(block: Block, workspace: Path) -> None:
     cwd = workspace
     for line in shell_lines(block.body):
         if line.startswith("cd "):
-            # `cd DIR && command`, or `cd DIR` alone for the lines after it.
+            # `cd DIR && command`, or `cd DIR` alone for the lines after it, as in a
+            # shell; `(cd DIR && command)` runs in a subshell and is left to the shell.
             folder, _, line = line[3:].partition("&&")
             cwd = cwd / folder.strip()
         if not _GENPARAMS.search(line):
