@@ -78,7 +78,7 @@ class Binding(Generic[P]):
 
         reader = OverrideReader(node, full, old_names_by_current(compiled.aliases))
         parameters, values, problems = resolve_all(compiled, reader.read, full)
-        problems[:0] = reader.problems
+        problems = reader.with_problems(problems)
         if problems:
             raise ParameterDeclarationError(spec.name, node.get_fully_qualified_name(), problems)
 
