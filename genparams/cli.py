@@ -14,10 +14,11 @@ from genparams.commands import (
     docs,
     generate,
     json_schema,
+    tune,
     validate,
 )
 
-COMMANDS = (generate, validate, docs, defaults, json_schema, check_params, cmake_dir)
+COMMANDS = (generate, validate, docs, defaults, json_schema, check_params, cmake_dir, tune)
 
 
 def build_parser() -> argparse.ArgumentParser:
