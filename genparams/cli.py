@@ -8,6 +8,7 @@ from collections.abc import Sequence
 
 from genparams import __version__
 from genparams.commands import (
+    audit,
     check_params,
     cmake_dir,
     defaults,
@@ -18,7 +19,7 @@ from genparams.commands import (
     validate,
 )
 
-COMMANDS = (generate, validate, docs, defaults, json_schema, check_params, cmake_dir, tune)
+COMMANDS = (generate, validate, docs, defaults, json_schema, check_params, cmake_dir, tune, audit)
 
 
 def build_parser() -> argparse.ArgumentParser:

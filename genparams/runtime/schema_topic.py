@@ -73,7 +73,10 @@ def describe_parameter(param: CompiledParam, name: str) -> dict[str, Any]:
 
 def describe_class(compiled: CompiledSchema, prefix: str) -> dict[str, Any]:
     """One declared class under one prefix, with full ROS names; mapped fields as templates."""
-    full = lambda name: join_prefix(prefix, name)  # noqa: E731
+
+    def full(name: str) -> str:
+        return join_prefix(prefix, name)
+
     maps = []
     for path, key_name in compiled.maps.items():
         head = f"{path}.{ENTRY_KEY}."
@@ -123,9 +126,6 @@ def node_message(node_name: str, classes: list[dict[str, Any]]) -> dict[str, Any
 class SchemaPublisher:
     """The one latched publisher of a node, holding every class declared there."""
 
-    _by_node: weakref.WeakKeyDictionary[Node, SchemaPublisher] = weakref.WeakKeyDictionary()
-    _guard = threading.Lock()
-
     def __init__(self, node: Node) -> None:
         from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
         from std_msgs.msg import String
@@ -143,10 +143,10 @@ class SchemaPublisher:
 
     @classmethod
     def of(cls, node: Node) -> SchemaPublisher:
-        with cls._guard:
-            found = cls._by_node.get(node)
+        with _GUARD:
+            found = _PUBLISHERS.get(node)
             if found is None:
-                found = cls._by_node[node] = cls(node)
+                found = _PUBLISHERS[node] = cls(node)
             return found
 
     def add(self, compiled: CompiledSchema, prefix: str) -> None:
@@ -161,6 +161,10 @@ class SchemaPublisher:
         message = self.message_type()
         message.data = json.dumps(self.message(), sort_keys=True)
         self.publisher.publish(message)
+
+
+_PUBLISHERS: weakref.WeakKeyDictionary[Node, SchemaPublisher] = weakref.WeakKeyDictionary()
+_GUARD = threading.Lock()
 
 
 def publish_schema(node: Node, compiled: CompiledSchema, prefix: str) -> None:

@@ -110,9 +110,7 @@ class TuneApp:
         except (ValueError, KeyError, TypeError) as exc:
             return JSONResponse({"error": f"bad request: {exc}"}, status_code=400)
         try:
-            results = await run_in_threadpool(
-                self.graph.set_parameters, node, parameters, atomic
-            )
+            results = await run_in_threadpool(self.graph.set_parameters, node, parameters, atomic)
         except TimeoutError as exc:
             return JSONResponse({"error": str(exc)}, status_code=504)
         return JSONResponse({"results": results})

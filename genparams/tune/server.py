@@ -43,7 +43,10 @@ class TuneServer:
         self.graph = graph if graph is not None else Graph()
         app = TuneApp(self.graph, token=token, read_only=read_only, nodes=nodes)
         config = uvicorn.Config(
-            app.starlette(), host=host, port=port, log_level="warning",
+            app.starlette(),
+            host=host,
+            port=port,
+            log_level="warning",
             lifespan="off",
             timeout_graceful_shutdown=1,
         )

@@ -1,7 +1,7 @@
 """Real nodes for the tuning and audit tests, in a process of their own.
 
 ``python -m tests.tune.demo_nodes NAME:KIND ...`` starts one node per argument
-(KIND: camera, arm, motion, plain, or wideN with N parameters) and prints
+(KIND: camera, arm, motion, plain, loose, or wideN with N parameters) and prints
 "ready" once every node is declared. ROS arguments for every node follow ``--``.
 """
 
@@ -75,6 +75,23 @@ def plain_node(name: str, args: list[str]) -> Node:
     return node
 
 
+def loose_node(name: str, workdir: Path) -> Node:
+    """Describes itself with the motion schema but declares plain, unchecked parameters.
+
+    What a node in another language, or an older build, may do: the audit, not
+    the node, has to catch the values its schema forbids.
+    """
+    from genparams.runtime.schema_topic import publish_schema
+    from genparams.runtime.spec import compile_schema
+
+    spec = params_class("motion", workdir)._SPEC
+    node = Node(name)
+    for param in spec.parameters:
+        node.declare_parameter(param.name, param.default)
+    publish_schema(node, compile_schema(spec), "")
+    return node
+
+
 def main(argv: list[str]) -> int:
     specs, ros_args = argv, []
     if "--" in argv:
@@ -87,6 +104,8 @@ def main(argv: list[str]) -> int:
         name, _, kind = spec.partition(":")
         if kind == "plain":
             node = plain_node(name, ros_args)
+        elif kind == "loose":
+            node = loose_node(name, workdir)
         else:
             # The camera's serial has no default: it must come from an override.
             own = ["-p", "serial:=CAM12345"] if kind == "camera" else []

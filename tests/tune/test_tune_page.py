@@ -17,7 +17,9 @@ from genparams.tune.server import TuneServer
 from tests.support import ROOT, RosHarness, ServiceClient
 from tests.tune.support import CHROMIUM, CHROMIUM_ARGS, demo_nodes, eventually, unique
 
-CAM, ARM, MOTION, PLAIN = (f"/{unique(s)}" for s in ("tune_cam", "tune_arm", "tune_motion", "tune_plain"))
+CAM, ARM, MOTION, PLAIN = (
+    f"/{unique(s)}" for s in ("tune_cam", "tune_arm", "tune_motion", "tune_plain")
+)
 
 
 @pytest.fixture(scope="module")
@@ -72,14 +74,16 @@ def client(ros_harness: RosHarness, node: str) -> ServiceClient:
     return ServiceClient(ros_harness, node)
 
 
-def test_slider_sets_the_node_value(page: Page, server: TuneServer, ros_harness: RosHarness) -> None:
+def test_slider_sets_the_node_value(
+    page: Page, server: TuneServer, ros_harness: RosHarness
+) -> None:
     open_node(page, server, CAM)
     slider = control(page, CAM, "camera.fps")
     expect(slider).to_have_attribute("step", "0.5")
     slider.fill("60")
     remote = client(ros_harness, CAM)
     eventually(lambda: remote.get("camera.fps") == [60.0])
-    expect(page.locator(f'[data-diff="camera.fps"]')).to_be_visible()
+    expect(page.locator('[data-diff="camera.fps"]')).to_be_visible()
 
 
 def test_out_of_range_is_stopped_in_the_page(
