@@ -12,15 +12,16 @@ from __future__ import annotations
 import json
 import threading
 import time
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Sequence
 from typing import Any
 
 import rclpy
-from rcl_interfaces.msg import ParameterEvent, ParameterType, ParameterValue
+from rcl_interfaces.msg import ParameterEvent
+from rclpy.client import Client
 from rclpy.context import Context
 from rclpy.executors import MultiThreadedExecutor
 from rclpy.node import Node
-from rclpy.parameter import Parameter, parameter_value_to_python
+from rclpy.parameter import Parameter
 from rclpy.parameter_client import AsyncParameterClient
 from rclpy.qos import (
     DurabilityPolicy,
@@ -29,10 +30,16 @@ from rclpy.qos import (
     ReliabilityPolicy,
     qos_profile_parameter_events,
 )
-from rclpy.task import Future
 from std_msgs.msg import String
 
 from genparams.runtime.schema_topic import SCHEMA_TOPIC_SUFFIX
+from genparams.tune.reader import (
+    TYPE_NAMES,
+    ParameterReader,
+    python_value,
+    read_all,
+    wait_future,
+)
 
 SCHEMA_QOS = QoSProfile(
     depth=1,
@@ -40,29 +47,8 @@ SCHEMA_QOS = QoSProfile(
     reliability=ReliabilityPolicy.RELIABLE,
     durability=DurabilityPolicy.TRANSIENT_LOCAL,
 )
-TYPE_NAMES = {
-    ParameterType.PARAMETER_BOOL: "bool",
-    ParameterType.PARAMETER_INTEGER: "int",
-    ParameterType.PARAMETER_DOUBLE: "double",
-    ParameterType.PARAMETER_STRING: "string",
-    ParameterType.PARAMETER_BYTE_ARRAY: "byte_array",
-    ParameterType.PARAMETER_BOOL_ARRAY: "bool_array",
-    ParameterType.PARAMETER_INTEGER_ARRAY: "int_array",
-    ParameterType.PARAMETER_DOUBLE_ARRAY: "double_array",
-    ParameterType.PARAMETER_STRING_ARRAY: "string_array",
-}
 ROS_TYPES = {name: ros_type for ros_type, name in TYPE_NAMES.items()}
 EventListener = Callable[[dict[str, Any]], None]
-
-
-def python_value(value: ParameterValue) -> Any:
-    """A ParameterValue as JSON-ready Python: arrays as lists, bytes as ints."""
-    plain = parameter_value_to_python(value)
-    if value.type == ParameterType.PARAMETER_BYTE_ARRAY:
-        return [b if isinstance(b, int) else ord(b) for b in plain]
-    if isinstance(plain, Iterable) and not isinstance(plain, str):
-        return list(plain)
-    return plain
 
 
 def ros_parameter(name: str, type_name: str, value: Any) -> Parameter:
@@ -75,16 +61,6 @@ def ros_parameter(name: str, type_name: str, value: Any) -> Parameter:
     elif type_name == "double_array":
         value = [float(v) for v in value]
     return Parameter(name, ros_type, value)
-
-
-def wait_future(future: Future, timeout: float) -> Any:
-    """Block a thread other than the executor's until ``future`` is done."""
-    done = threading.Event()
-    future.add_done_callback(lambda _: done.set())
-    if not done.wait(timeout):
-        future.cancel()
-        raise TimeoutError("no answer from the node's parameter services")
-    return future.result()
 
 
 class Graph:
@@ -100,7 +76,8 @@ class Graph:
         self.schemas: dict[str, dict[str, Any]] = {}  # node name -> its schema message
         self.schema_times: dict[str, float] = {}
         self.subscribed: set[str] = set()
-        self.clients: dict[str, AsyncParameterClient] = {}
+        self.readers: dict[str, ParameterReader] = {}
+        self.setters: dict[str, AsyncParameterClient] = {}
         self.listeners: list[EventListener] = []
         self.node.create_subscription(
             ParameterEvent, "/parameter_events", self.on_event, qos_profile_parameter_events
@@ -169,43 +146,60 @@ class Graph:
 
     # Parameter services -------------------------------------------------------
 
-    def client(self, node_name: str) -> AsyncParameterClient:
+    def setter(self, node_name: str) -> AsyncParameterClient:
         with self.lock:
-            found = self.clients.get(node_name)
+            found = self.setters.get(node_name)
             if found is None:
-                found = self.clients[node_name] = AsyncParameterClient(self.node, node_name)
+                found = self.setters[node_name] = AsyncParameterClient(self.node, node_name)
             return found
 
+    def reader(self, node_name: str) -> ParameterReader:
+        with self.lock:
+            found = self.readers.get(node_name)
+            if found is None:
+                found = self.readers[node_name] = ParameterReader(self.node, node_name)
+            return found
+
+    def forget(self, node_name: str) -> None:
+        """Destroy the service clients of ``node_name``.
+
+        Every client is an entity the executor waits on at each wake-up and DDS
+        matches against every new endpoint: an audit of many nodes reads a few at
+        a time and lets their clients go.
+        """
+        with self.lock:
+            reader = self.readers.pop(node_name, None)
+            setter = self.setters.pop(node_name, None)
+        if reader is not None:
+            reader.destroy()
+        if setter is not None:
+            for attribute in vars(setter).values():
+                if isinstance(attribute, Client):
+                    self.node.destroy_client(attribute)
+
     def services_ready(self, node_name: str, timeout: float) -> bool:
-        return bool(self.client(node_name).wait_for_services(timeout_sec=timeout))
+        return self.reader(node_name).wait_ready(timeout)
 
     def read_node(self, node_name: str, timeout: float = 5.0) -> list[dict[str, Any]]:
         """Every parameter of a node: name, type, value and descriptor, as JSON-ready dicts."""
-        client = self.client(node_name)
-        if not client.wait_for_services(timeout_sec=timeout):
-            raise TimeoutError(f"{node_name}: parameter services did not appear")
-        listed = wait_future(client.list_parameters([], 0), timeout)
-        names = sorted(listed.result.names)
-        values = wait_future(client.get_parameters(names), timeout).values
-        descriptors = wait_future(client.describe_parameters(names), timeout).descriptors
-        return [
-            {
-                "name": name,
-                "type": TYPE_NAMES.get(value.type, "unset"),
-                "value": python_value(value),
-                "read_only": descriptor.read_only,
-                "description": descriptor.description,
-                "constraints": descriptor.additional_constraints,
-                "range": descriptor_range(descriptor),
-            }
-            for name, value, descriptor in zip(names, values, descriptors, strict=True)
-        ]
+        return self.read_nodes([node_name], timeout)[node_name]
+
+    def read_nodes(
+        self, node_names: Sequence[str], timeout: float = 5.0
+    ) -> dict[str, list[dict[str, Any]]]:
+        return read_all([self.reader(name) for name in node_names], timeout)
 
     def set_parameters(
         self, node_name: str, parameters: list[Parameter], atomic: bool, timeout: float = 5.0
     ) -> list[dict[str, Any]]:
         """Set through the node's services; one result per parameter (atomic: the same one)."""
-        client = self.client(node_name)
+        client = self.setter(node_name)
+        if not client.services_are_ready():
+            deadline = time.monotonic() + timeout
+            while not client.services_are_ready():  # rclpy's own wait sleeps 0.25 s steps
+                if time.monotonic() > deadline:
+                    raise TimeoutError(f"{node_name}: parameter services did not appear")
+                time.sleep(0.005)
         if atomic:
             result = wait_future(client.set_parameters_atomically(parameters), timeout).result
             results = [result] * len(parameters)
@@ -248,11 +242,3 @@ class Graph:
             listeners = tuple(self.listeners)
         for listener in listeners:
             listener(event)
-
-
-def descriptor_range(descriptor: Any) -> dict[str, Any] | None:
-    for ranges in (descriptor.integer_range, descriptor.floating_point_range):
-        if ranges:
-            first = ranges[0]
-            return {"min": first.from_value, "max": first.to_value, "step": first.step}
-    return None
