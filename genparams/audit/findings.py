@@ -28,7 +28,10 @@ class Finding:
 
     def text(self) -> str:
         where = f"{self.node}: {self.parameter}" if self.parameter else self.node
-        return f"{where}: {self.detail} [{self.kind}]"
+        values = ""
+        if self.kind in (DRIFT_DEFAULT, DRIFT_FILE):
+            values = f" (expected {self.expected!r}, found {self.actual!r})"
+        return f"{where}: {self.detail}{values} [{self.kind}]"
 
     def as_json(self) -> dict[str, Any]:
         return asdict(self)
