@@ -129,30 +129,62 @@ function renderNode(data) {
     if (meta.mapped !== undefined) continue;
     const title = meta.schema ? namespaceOf(name) : "other parameters (not in the schema)";
     if (!sections.has(title)) sections.set(title, []);
-    sections.get(title).push(rowFor(name));
+    sections.get(title).push(name);
   }
   const order = [...sections.keys()].sort((a, b) => (a.startsWith("other") - b.startsWith("other")) || a.localeCompare(b));
-  const groups = known.maps.map((group) => mapGroup(group, known.values.get(group.for_each) || [],
-    (key) => group.fields.map((f) => rowFor(`${group.path}.${key}.${f.name}`)),
-    { readOnly: page.readOnly,
-      onAddKey: (g, key) => setKeys(g, [...(known.values.get(g.for_each) || []), key]),
-      onRemoveKey: (g, key) => setKeys(g, (known.values.get(g.for_each) || []).filter((k) => k !== key)) }));
+  // Builders, each with its row count: the first screenful is built at once, the rest in chunks.
+  const builders = order.map((t) => [sections.get(t).length, () => section(t, sections.get(t).map(rowFor))]);
+  for (const group of known.maps) {
+    const keys = known.values.get(group.for_each) || [];
+    builders.push([keys.length * group.fields.length, () => mapGroup(group, keys,
+      (key) => group.fields.map((f) => rowFor(`${group.path}.${key}.${f.name}`)),
+      { readOnly: page.readOnly,
+        onAddKey: (g, key) => setKeys(g, [...(known.values.get(g.for_each) || []), key]),
+        onRemoveKey: (g, key) => setKeys(g, (known.values.get(g.for_each) || []).filter((k) => k !== key)) })]);
+  }
   const apply = el("button", { type: "button", "data-apply": true });
   apply.addEventListener("click", applyPending);
   const download = el("a", { href: api.paramsFileUrl(data.node), download: "", "data-download": true,
     text: "Download params file" });
   const diff = el("div", { class: "diff-box" });
+  const body = el("div", { class: "sections" });
   const kind = data.schema ? `genparams ${data.schema.genparams} · schema ${data.schema.hash}` : "plain rclpy node";
   const form = el("form", { "data-node": data.node, class: data.schema ? "genparams" : "plain" },
     el("h2", { text: data.node }), el("p", { class: "hint", text: kind }),
-    el("div", { class: "toolbar" }, apply, download),
-    ...order.map((t) => section(t, sections.get(t))), ...groups,
+    el("div", { class: "toolbar" }, apply, download), body,
     el("h3", { text: "Differences from the defaults" }), diff);
   form.addEventListener("submit", (event) => event.preventDefault());
   page.view = { form, known, apply, diff };
+  buildInChunks(body, builders, form);
   document.getElementById("view").replaceChildren(form);
   updateApplyButton();
   renderDiff();
+}
+
+// Append sections until `budget` rows are in; the rest follow in chunks, a frame apart,
+// so a node with thousands of parameters is usable before its last section exists.
+function buildInChunks(body, builders, form, budget = 60) {
+  let next = 0;
+  const step = (limit) => {
+    let rows = 0;
+    while (next < builders.length && (rows === 0 || rows + builders[next][0] <= limit)) {
+      rows += builders[next][0];
+      body.append(builders[next++][1]());
+    }
+  };
+  step(budget);
+  return new Promise((resolve) => {
+    const more = () => {
+      if (page.view?.form !== form) return resolve();
+      if (next >= builders.length) {
+        form.dataset.complete = String(Math.round(performance.now()));
+        return resolve();
+      }
+      step(200);
+      setTimeout(more);
+    };
+    requestAnimationFrame(() => setTimeout(more));
+  });
 }
 
 async function openNode(name, loading = null) {
@@ -162,7 +194,7 @@ async function openNode(name, loading = null) {
   status(`loading ${name}…`);
   const data = await (loading || api.node(name));
   if (page.node !== name) return;
-  renderNode(data);
+  renderNode(data);  // later sections follow on their own; the form says data-complete
   status(`${data.parameters.length} parameters`);
 }
 
@@ -170,7 +202,7 @@ function onEvent(event) {
   if (!page.view || event.node !== page.node) return;
   if (event.kind === "schema" || Object.keys(event.new || {}).length || (event.deleted || []).length) {
     clearTimeout(page.reload);  // the set of parameters changed: build the form again
-    page.reload = setTimeout(() => openNode(page.node), 50);
+    page.reload = setTimeout(() => openNode(page.node), 200);  // a declare sends one event per parameter
     return;
   }
   for (const [name, value] of Object.entries(event.changed || {})) {
