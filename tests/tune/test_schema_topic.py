@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import time
 from pathlib import Path
 from typing import Any
 
@@ -23,9 +24,8 @@ def latest_schema(ros: RosHarness, node: Node) -> dict[str, Any]:
         String, topic, lambda m: received.append(m.data), SCHEMA_QOS
     )
     try:
-        for _ in range(200):
-            if received:
-                break
+        deadline = time.monotonic() + 30.0  # by the clock: spin_once returns at any callback
+        while not received and time.monotonic() < deadline:
             ros.executor.spin_once(timeout_sec=0.05)
         assert received, f"no message on {topic}"
         return dict(json.loads(received[-1]))
@@ -83,3 +83,16 @@ def test_the_topic_can_be_turned_off(ros: RosHarness, tmp_path: Path) -> None:
     module.ArmParams.declare(node, publish_schema=False)
     topics = [name for name, _ in node.get_publisher_names_and_types_by_node(node.get_name(), "/")]
     assert not any(name.endswith(SCHEMA_TOPIC_SUFFIX) for name in topics)
+
+
+def test_the_assembled_text_is_the_sorted_json_of_the_message(
+    ros: RosHarness, tmp_path: Path
+) -> None:
+    from genparams.runtime.schema_topic import SchemaPublisher
+
+    arm = load_generated(ROOT / "examples/arm/arm.yaml", tmp_path)
+    node = ros.node()
+    arm.ArmParams.declare(node)
+    arm.ArmParams.declare(node, prefix="right")
+    text = SchemaPublisher.of(node).message_text()
+    assert json.dumps(json.loads(text), sort_keys=True) == text

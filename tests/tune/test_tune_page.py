@@ -15,7 +15,14 @@ from rclpy.parameter import Parameter
 from genparams.cli import main as cli_main
 from genparams.tune.server import TuneServer
 from tests.support import ROOT, RosHarness, ServiceClient
-from tests.tune.support import CHROMIUM, CHROMIUM_ARGS, demo_nodes, eventually, unique
+from tests.tune.support import (
+    CHROMIUM,
+    CHROMIUM_ARGS,
+    demo_nodes,
+    eventually,
+    service_client,
+    unique,
+)
 
 CAM, ARM, MOTION, PLAIN = (
     f"/{unique(s)}" for s in ("tune_cam", "tune_arm", "tune_motion", "tune_plain")
@@ -70,8 +77,14 @@ def error(page: Page, name: str):  # type: ignore[no-untyped-def]
     return page.locator(f'[data-param-error="{name}"]')
 
 
+_CLIENTS: dict[str, ServiceClient] = {}
+
+
 def client(ros_harness: RosHarness, node: str) -> ServiceClient:
-    return ServiceClient(ros_harness, node)
+    """One client per node for the module: each opens six service clients."""
+    if node not in _CLIENTS:
+        _CLIENTS[node] = service_client(ros_harness, node)
+    return _CLIENTS[node]
 
 
 def test_slider_sets_the_node_value(
@@ -228,3 +241,15 @@ def test_read_only_page_and_token(page: Page, server: TuneServer) -> None:
         viewer.stop()
         guarded.stop()
     assert TuneServer("0.0.0.0", graph=server.graph).token  # any host but loopback: a token
+
+
+def test_reset_to_default_and_the_diff(
+    page: Page, server: TuneServer, ros_harness: RosHarness
+) -> None:
+    open_node(page, server, CAM)
+    remote = client(ros_harness, CAM)
+    assert remote.set(Parameter("control.pid.kp", value=2.5))[0].successful
+    expect(page.locator('[data-diff="control.pid.kp"]')).to_contain_text("2.5")
+    page.locator('[data-reset="control.pid.kp"]').click()
+    eventually(lambda: remote.get("control.pid.kp") == [1.0])
+    expect(page.locator('[data-diff="control.pid.kp"]')).to_have_count(0)
