@@ -162,7 +162,9 @@ class SchemaPublisher:
         from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
         from std_msgs.msg import String
 
-        self.node = node
+        # The node's name, not the node: the registry below is keyed weakly by the node,
+        # and a value holding its key would keep every node ever declared alive.
+        self.node_name = node.get_fully_qualified_name()
         self.classes: dict[tuple[str, str], ClassText] = {}
         self.message_type = String
         qos = QoSProfile(
@@ -187,7 +189,7 @@ class SchemaPublisher:
 
     def message_text(self) -> str:
         ordered = [self.classes[key] for key in sorted(self.classes)]
-        return node_message_text(self.node.get_fully_qualified_name(), ordered)
+        return node_message_text(self.node_name, ordered)
 
     def publish(self) -> None:
         message = self.message_type()

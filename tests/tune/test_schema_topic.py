@@ -96,3 +96,17 @@ def test_the_assembled_text_is_the_sorted_json_of_the_message(
     arm.ArmParams.declare(node, prefix="right")
     text = SchemaPublisher.of(node).message_text()
     assert json.dumps(json.loads(text), sort_keys=True) == text
+
+
+def test_a_destroyed_node_is_not_kept_alive(ros: RosHarness, tmp_path: Path) -> None:
+    import gc
+    import weakref
+
+    arm = load_generated(ROOT / "examples/arm/arm.yaml", tmp_path)
+    node = ros.node()
+    arm.ArmParams.declare(node)
+    alive = weakref.ref(node)
+    del node
+    ros.destroy_test_nodes()
+    gc.collect()
+    assert alive() is None
