@@ -13,6 +13,7 @@ from genparams import __version__
 from genparams.outputs import markup
 from genparams.outputs.docs_model import DocsPage
 from genparams.outputs.params_file import ParamsFile
+from genparams.runtime import RUNTIME_API
 from genparams.schema.model import Schema
 from genparams.schema.resources import resource_dir
 
@@ -140,7 +141,7 @@ def environment() -> jinja2.Environment:
 
 def render_module(schema: Schema) -> str:
     template = environment().get_template("module.py.j2")
-    return template.render(schema=schema, version=__version__)
+    return template.render(schema=schema, version=__version__, runtime_api=RUNTIME_API)
 
 
 def render_params_file(params_file: ParamsFile) -> str:

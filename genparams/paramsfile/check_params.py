@@ -10,7 +10,6 @@ ignores silently: unknown keys (typos) and sections that match no node.
 from __future__ import annotations
 
 import dataclasses
-import difflib
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -20,6 +19,7 @@ from genparams.paramsfile.ros_yaml import node_matches, ros_type_name
 from genparams.runtime.entries import expand
 from genparams.runtime.naming import ENTRY_KEY, ENTRY_KEY_RULE, is_entry_key
 from genparams.runtime.spec import CompiledParam
+from genparams.runtime.suggest import did_you_mean_name
 from genparams.runtime.types import ValueTypeError
 from genparams.runtime.validators import Custom
 from genparams.schema.errors import Location, SchemaProblem
@@ -310,13 +310,4 @@ def _shown(value: object) -> str:
 
 def suggestion(name: str, candidates: Sequence[str]) -> str:
     """`` (did you mean 'camera.fps'?)`` for a misspelt or misplaced name, else ""."""
-    last = name.rsplit(".", 1)[-1]
-    same_leaf = [c for c in candidates if c.rsplit(".", 1)[-1] == last]
-    if len(same_leaf) == 1:
-        return f" (did you mean {same_leaf[0]!r}?)"
-    close = difflib.get_close_matches(name, sorted(candidates), n=1, cutoff=0.6)
-    if not close:
-        leaves = {c.rsplit(".", 1)[-1]: c for c in sorted(candidates)}
-        near = difflib.get_close_matches(last, sorted(leaves), n=1, cutoff=0.75)
-        close = [leaves[near[0]]] if near else []
-    return f" (did you mean {close[0]!r}?)" if close else ""
+    return did_you_mean_name(name, candidates)

@@ -21,12 +21,12 @@ Pure Python, shared by the code generator and the runtime.
 from __future__ import annotations
 
 import ast
-import difflib
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
 from genparams.runtime.naming import attribute_name
+from genparams.runtime.suggest import did_you_mean
 
 MAX_CHECK_LENGTH = 2000
 
@@ -247,9 +247,7 @@ class _Compiler:
                 )
         if spelling in FUNCTIONS:
             return f"{spelling!r} is a function: call it, as in {spelling}(...)"
-        close = difflib.get_close_matches(spelling, sorted(self.spellings), n=1, cutoff=0.6)
-        hint = f" (did you mean {close[0]!r}?)" if close else ""
-        return f"unknown parameter {spelling!r}{hint}"
+        return f"unknown parameter {spelling!r}{did_you_mean(spelling, self.spellings)}"
 
     def sequence(self, node: ast.Tuple | ast.List) -> tuple[str, Evaluator]:
         items = [self.compile(item) for item in node.elts]

@@ -13,6 +13,7 @@ from collections.abc import Collection, Iterable, Iterator
 from typing import Any
 
 from genparams.runtime import naming
+from genparams.runtime.suggest import did_you_mean
 from genparams.runtime.types import INT64_MAX, INT64_MIN, TYPES, ParamType, ValueTypeError
 from genparams.runtime.validators import (
     KINDS,
@@ -25,10 +26,16 @@ from genparams.runtime.validators import (
 )
 from genparams.schema.errors import SchemaError, SchemaProblem
 from genparams.schema.loader import LoadedDocument, Path, dotted
-from genparams.schema.model import Group, Parameter, RangeSpec, Schema, ValidatorSpec
+from genparams.schema.model import (
+    Group,
+    Parameter,
+    RangeSpec,
+    Schema,
+    ValidatorSpec,
+    with_entry_keys,
+)
 from genparams.schema.references import check_aliases, check_maps
 from genparams.schema.rule_builder import build_rules
-from genparams.schema.schema_check import did_you_mean
 
 FOR_EACH = "for_each"
 
@@ -95,6 +102,7 @@ class _ModelBuilder:
         check_aliases(root, self.aliases, self.problem)
         rules, rule_problems = build_rules(self.document, root.walk_parameters(), self.is_unbuilt)
         self.problems.extend(rule_problems)
+        root = with_entry_keys(root)
         return Schema(
             name=name,
             description=data.get("description", ""),
@@ -404,11 +412,11 @@ class _ModelBuilder:
             if rule in ("one_of", "subset_of") and isinstance(argument, tuple):
                 argument = self.typed_choices(path, argument, param_type)
             try:
-                validator = build_validator(rule, argument, param_type.name)
+                build_validator(rule, argument, param_type.name)  # its argument errors, here
             except ValidatorArgumentError as exc:
                 self.problem(path, str(exc))
                 continue
-            specs.append(ValidatorSpec(rule, argument, validator.describe()))
+            specs.append(ValidatorSpec(rule, argument))
         return tuple(specs)
 
     def typed_choices(
