@@ -3,7 +3,7 @@
     python -m tests.update_golden           # every kind
     python -m tests.update_golden cases     # tests/cases/*/expected_params.py (modules)
     python -m tests.update_golden bad       # tests/bad_schemas/*.stderr
-    python -m tests.update_golden outputs   # tests/cases/*: docs, defaults, JSON Schema, check_params/*
+    python -m tests.update_golden outputs   # docs, defaults, JSON Schema, check_params/*
 
 Review the diff before committing: every changed line is a change users see.
 """

@@ -1,8 +1,8 @@
 """What a schema's documentation page says, decided here; the templates only write it out.
 
 Constraints are worded by the runtime's own validators (``Parameter.constraints``),
-so the page states exactly the rules a node enforces, in the words of every other output. The "Default configuration"
-block is the default params file itself (see params_file).
+so the page states exactly the rules a node enforces, in every other output's words.
+The "Default configuration" block is the default params file itself (see params_file).
 """
 
 from __future__ import annotations

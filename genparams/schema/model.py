@@ -12,8 +12,8 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 from genparams.runtime.naming import ENTRY_KEY
-from genparams.runtime.types import ParamType
 from genparams.runtime.spec import CompiledParam, EntryKeys, ParamSpec, compile_param
+from genparams.runtime.types import ParamType
 from genparams.schema.errors import Location
 
 
