@@ -19,7 +19,7 @@ from typing import Any
 from genparams.outputs.params_file import parameter_comment
 from genparams.outputs.yaml_text import value_text
 from genparams.paramsfile.ros_yaml import PARAMS_KEY
-from genparams.runtime.naming import ENTRY_KEY
+from genparams.runtime.naming import ENTRY_KEY, ENTRY_KEY_TEXT, NODE_TOKEN
 from genparams.runtime.spec import EntryKeys
 from genparams.runtime.validators import (
     Bounds,
@@ -36,9 +36,9 @@ from genparams.runtime.validators import (
 from genparams.schema.model import Group, Parameter, Schema
 
 DRAFT = "https://json-schema.org/draft/2020-12/schema"
-_TOKEN = "(\\*\\*|\\*|[A-Za-z_][A-Za-z0-9_]*)"
+_TOKEN = f"(\\*\\*|\\*|{NODE_TOKEN.pattern})"  # a node name token or a wildcard
 NODE_KEY_PATTERN = f"^/?{_TOKEN}(/{_TOKEN})*$"
-ENTRY_KEY_PATTERN = "^[A-Za-z0-9_-]+$"  # the key of a mapped entry: naming.ENTRY_KEY_TEXT
+ENTRY_KEY_PATTERN = f"^{ENTRY_KEY_TEXT.pattern}$"  # the key of a mapped entry
 # Parameters every rclpy node declares itself; a params file may set them for any node.
 BUILTIN_PARAMETERS: dict[str, dict[str, Any]] = {
     "use_sim_time": {"type": "boolean", "description": "Use /clock for time (every ROS node)."},

@@ -103,6 +103,17 @@ def wrapped_literal(value: Any, indent: int, used: int, trailing: int) -> str:
     return opening + "\n" + "\n".join(lines) + f"\n{' ' * indent}{closing}"
 
 
+# ruff splits a class header or an annotation too long for a line at brackets of its
+# choosing; a line only very long names make so long keeps its one-line form and
+# tells ruff so. Every other line is laid out here as ruff lays it out.
+_KEEP_AS_IS = "  # fmt: skip"
+
+
+def one_line(text: str, indent: int) -> str:
+    """``text`` at ``indent``, marked for ruff to leave alone when it is too long."""
+    return text + _KEEP_AS_IS if indent + len(text) > LINE_LENGTH else text
+
+
 def keyword_argument(option: tuple[str, Any], indent: int) -> str:
     """``key=value`` for a line at ``indent`` that ends with a comma."""
     key, value = option
@@ -128,6 +139,7 @@ def environment() -> jinja2.Environment:
     env.filters["py"] = python_literal
     env.filters["keyword_argument"] = keyword_argument
     env.filters["assignment"] = assignment
+    env.filters["one_line"] = one_line
     env.filters.update(
         md_text=markup.md_text,
         md_paragraphs=markup.md_paragraphs,
