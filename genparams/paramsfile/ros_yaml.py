@@ -146,6 +146,7 @@ def ros_type_name(value: ScalarValue) -> str:
 
 # ---- node names -----------------------------------------------------------------------
 
+
 def node_matches(pattern: str, node: str) -> bool:
     """Whether a params-file section named ``pattern`` applies to the node ``node``."""
     return _match(absolute(pattern)[1:].split("/"), absolute(node)[1:].split("/"))
