@@ -272,7 +272,7 @@ def parameter_schema(parameter: Parameter) -> dict[str, Any]:
 
 def hover_text(parameter: Parameter) -> str:
     lines = list(parameter_comment(parameter))
-    facts = [f"Type: {parameter.type.name}."]
+    facts = [parameter.stated("type")]
     if parameter.type.scalar_kind == "double":
         facts.append("Write a decimal point (30.0, not 30): ROS does not convert.")
     if parameter.required:

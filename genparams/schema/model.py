@@ -65,21 +65,28 @@ class Parameter:
     @property
     def docstring(self) -> str:
         """Hover text in IDEs: description, unit, default and constraints."""
-        lines = [self.description or self.ros_name]
-        facts = [f"Type: {self.type.name}."]
-        if self.unit:
-            facts.append(f"Unit: {self.unit}.")
-        facts.append("Required." if self.required else f"Default: {self.default!r}.")
-        if self.read_only:
-            facts.append("Read-only.")
-        if self.all_constraints_text:
-            facts.append(f"Constraints: {self.all_constraints_text}.")
-        if self.deprecated:
-            facts.append(f"Deprecated: {self.deprecated.rstrip('.')}.")
-        if self.aliases:
-            facts.append("Old names: " + ", ".join(self.aliases) + ".")
-        lines.append(" ".join(facts))
-        return "\n\n".join(lines)
+        default = "Required." if self.required else f"Default: {self.default!r}."
+        deprecated = f"Deprecated: {self.deprecated.rstrip('.')}." if self.deprecated else ""
+        facts = (
+            self.stated("type", "unit"),
+            default,
+            self.stated("read_only", "constraints"),
+            deprecated,
+            self.stated("old_names"),
+        )
+        return f"{self.description or self.ros_name}\n\n" + " ".join(f for f in facts if f)
+
+    def stated(self, *facts: str) -> str:
+        """The named facts in the words every output states them in (docstrings, comments
+        of default params files, JSON Schema hover text), those that apply, in order."""
+        words = {
+            "type": f"Type: {self.type.name}.",
+            "unit": f"Unit: {self.unit}." if self.unit else "",
+            "read_only": "Read-only." if self.read_only else "",
+            "constraints": f"Constraints: {self.all_constraints_text}." if self.constraints else "",
+            "old_names": f"Old names: {', '.join(self.aliases)}." if self.aliases else "",
+        }
+        return " ".join(words[fact] for fact in facts if words[fact])
 
     @functools.cached_property
     def compiled(self) -> CompiledParam:
