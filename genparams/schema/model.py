@@ -62,7 +62,7 @@ class Parameter:
     def annotation(self) -> str:
         return self.type.annotation
 
-    @property
+    @functools.cached_property
     def docstring(self) -> str:
         """Hover text in IDEs: description, unit, default and constraints."""
         default = "Required." if self.required else f"Default: {self.default!r}."
@@ -79,14 +79,18 @@ class Parameter:
     def stated(self, *facts: str) -> str:
         """The named facts in the words every output states them in (docstrings, comments
         of default params files, JSON Schema hover text), those that apply, in order."""
-        words = {
+        words = self._fact_words
+        return " ".join(words[fact] for fact in facts if words[fact])
+
+    @functools.cached_property
+    def _fact_words(self) -> dict[str, str]:
+        return {
             "type": f"Type: {self.type.name}.",
             "unit": f"Unit: {self.unit}." if self.unit else "",
             "read_only": "Read-only." if self.read_only else "",
             "constraints": f"Constraints: {self.all_constraints_text}." if self.constraints else "",
             "old_names": f"Old names: {', '.join(self.aliases)}." if self.aliases else "",
         }
-        return " ".join(words[fact] for fact in facts if words[fact])
 
     @functools.cached_property
     def compiled(self) -> CompiledParam:
@@ -100,17 +104,17 @@ class Parameter:
         """The ``ParamSpec`` a generated module holds for this parameter."""
         return ParamSpec(self.ros_name, self.type.name, **dict(self.spec_options))
 
-    @property
+    @functools.cached_property
     def constraints(self) -> tuple[str, ...]:
         """Every constraint in the runtime's words, the range included."""
         return self.compiled.constraints
 
-    @property
+    @functools.cached_property
     def all_constraints_text(self) -> str:
         """Every constraint on one line (hover text, comments)."""
         return "; ".join(self.constraints)
 
-    @property
+    @functools.cached_property
     def spec_options(self) -> tuple[tuple[str, Any], ...]:
         """Keyword arguments of the runtime ParamSpec that differ from their defaults."""
         options: list[tuple[str, Any]] = []
