@@ -36,7 +36,10 @@ __all__ = [
 class RangesGroup(_Group):
     "Parameters under ranges."
 
-    __slots__ = ("fps", "full_int64", "offsets", "weights", "width")
+    __slots__ = ("even", "fps", "full_int64", "offsets", "weights", "width")
+
+    even: tuple[int, ...]
+    "ranges.even\n\nType: int_array. Default: (0, 2, 4). Constraints: every item within [0, 10] in steps of 2."
 
     fps: float
     "ranges.fps\n\nType: double. Unit: Hz. Default: 30.0. Constraints: within [1.0, 120.0] in steps of 0.5."
@@ -321,6 +324,12 @@ class ValidatorsParams(_Params):
                 "string_array",
                 default=("/a", "/b"),
                 validators=(("not_empty", None), ("unique", None), ("pattern", "^/")),
+            ),
+            _ParamSpec(
+                "ranges.even",
+                "int_array",
+                default=(0, 2, 4),
+                range=(0, 10, 2),
             ),
             _ParamSpec(
                 "ranges.fps",
