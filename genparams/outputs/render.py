@@ -80,7 +80,7 @@ def _item_literal(item: Any, is_dict: bool, indent: int) -> str:
     if is_dict:
         key, value = item
         head = f"{python_literal(key)}: "
-        return head + wrapped_literal(value, indent, indent + len(head), 1)
+        return head + wrapped_literal(value, indent, indent + markup.column_width(head), 1)
     return wrapped_literal(item, indent, indent, 1)
 
 
@@ -93,7 +93,8 @@ def wrapped_literal(value: Any, indent: int, used: int, trailing: int) -> str:
     """
     flat = python_literal(value)
     container = _items(value)
-    if container is None or used + len(flat) + trailing <= LINE_LENGTH:
+    # ruff measures lines in columns: a wide character takes two, a combining mark none.
+    if container is None or used + markup.column_width(flat) + trailing <= LINE_LENGTH:
         return flat
     # A collection literal that does not fit gets one item per line (ruff, like black).
     opening, closing, items = container
@@ -111,7 +112,7 @@ _KEEP_AS_IS = "  # fmt: skip"
 
 def one_line(text: str, indent: int) -> str:
     """``text`` at ``indent``, marked for ruff to leave alone when it is too long."""
-    return text + _KEEP_AS_IS if indent + len(text) > LINE_LENGTH else text
+    return text + _KEEP_AS_IS if indent + markup.column_width(text) > LINE_LENGTH else text
 
 
 def keyword_argument(option: tuple[str, Any], indent: int) -> str:
