@@ -85,8 +85,9 @@ def test_real_command_generate_exits_2_without_output(tmp_path: Path) -> None:
     assert not target.exists()
 
 
-# Peak RSS is read from VmHWM, which execve resets: ru_maxrss would also count the memory
-# of the test process this interpreter was forked from, however large it has grown.
+# Peak RSS is read as VmHWM, the high-water mark of this process's own memory:
+# getrusage's ru_maxrss survives exec, so a child started by a large pytest
+# process would report the parent's peak instead of its own.
 MEASURE = """
 import json, sys, time
 from genparams.api import load_schema
@@ -100,10 +101,8 @@ except SchemaError as exc:
 print(json.dumps({
     "seconds": time.monotonic() - start,
     "max_rss_mb": next(
-        int(line.split()[1]) / 1024
-        for line in open("/proc/self/status", encoding="ascii")
-        if line.startswith("VmHWM:")
-    ),
+        int(line.split()[1]) for line in open("/proc/self/status") if line.startswith("VmHWM:")
+    ) / 1024,
     "message": message,
 }))
 """
