@@ -8,6 +8,7 @@ from collections.abc import Sequence
 
 from genparams import __version__
 from genparams.commands import (
+    audit,
     check_deployment,
     check_params,
     cmake_dir,
@@ -16,6 +17,7 @@ from genparams.commands import (
     explain,
     generate,
     json_schema,
+    tune,
     validate,
 )
 
@@ -28,6 +30,8 @@ COMMANDS = (
     check_params,
     check_deployment,
     explain,
+    tune,
+    audit,
     cmake_dir,
 )
 

@@ -1,8 +1,8 @@
 """What a schema's documentation page says, decided here; the templates only write it out.
 
-Constraints are worded by the runtime's own validators (``describe()``), so the
-page states exactly the rules a node enforces. The "Default configuration"
-block is the default params file itself (see params_file).
+Constraints are worded by the runtime's own validators (``Parameter.constraints``),
+so the page states exactly the rules a node enforces, in every other output's words.
+The "Default configuration" block is the default params file itself (see params_file).
 """
 
 from __future__ import annotations
@@ -15,9 +15,7 @@ from genparams import __version__
 from genparams.outputs.params_file import ParamsFile, default_params_file
 from genparams.outputs.yaml_text import value_text
 from genparams.runtime.naming import ENTRY_KEY
-from genparams.runtime.spec import CompiledParam
 from genparams.schema.model import Group, Parameter, Schema
-from genparams.schema.specs import compiled_param, compiled_params
 
 FORMATS = ("markdown", "rst")
 
@@ -76,7 +74,6 @@ class DocsPage:
 
 
 def docs_page(schema: Schema) -> DocsPage:
-    compiled = compiled_params(schema)
     return DocsPage(
         title=schema.name,
         description=schema.description,
@@ -87,7 +84,7 @@ def docs_page(schema: Schema) -> DocsPage:
         namespaces=tuple(
             NamespaceDoc(
                 group.ros_name,
-                tuple(parameter_doc(p, compiled[p.ros_name]) for p in group.parameters),
+                tuple(parameter_doc(p) for p in group.parameters),
                 _mapped_note(group),
             )
             for group in _documented_groups(schema.root)
@@ -118,17 +115,13 @@ def _mapped_note(group: Group) -> str:
     )
 
 
-def parameter_doc(parameter: Parameter, compiled: CompiledParam | None = None) -> ParameterDoc:
-    checks = (compiled or compiled_param(parameter)).checks
-    constraints = [check.describe() for check in checks]
-    if parameter.additional_constraints:
-        constraints.append(parameter.additional_constraints)
+def parameter_doc(parameter: Parameter) -> ParameterDoc:
     return ParameterDoc(
         name=parameter.ros_name,
         type_name=parameter.type.name,
         default="" if parameter.required else value_text(parameter.default, parameter.type),
         unit=parameter.unit,
-        constraints=tuple(constraints),
+        constraints=parameter.constraints,
         description=parameter.description,
         required=parameter.required,
         read_only=parameter.read_only,

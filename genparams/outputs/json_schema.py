@@ -19,8 +19,8 @@ from typing import Any
 from genparams.outputs.params_file import parameter_comment
 from genparams.outputs.yaml_text import value_text
 from genparams.paramsfile.ros_yaml import PARAMS_KEY
-from genparams.runtime.naming import ENTRY_KEY
-from genparams.runtime.spec import CompiledParam, EntryKeys
+from genparams.runtime.naming import ENTRY_KEY, ENTRY_KEY_TEXT, NODE_TOKEN
+from genparams.runtime.spec import EntryKeys
 from genparams.runtime.validators import (
     Bounds,
     Compare,
@@ -34,12 +34,11 @@ from genparams.runtime.validators import (
     Validator,
 )
 from genparams.schema.model import Group, Parameter, Schema
-from genparams.schema.specs import compiled_param, compiled_params
 
 DRAFT = "https://json-schema.org/draft/2020-12/schema"
-_TOKEN = "(\\*\\*|\\*|[A-Za-z_][A-Za-z0-9_]*)"
+_TOKEN = f"(\\*\\*|\\*|{NODE_TOKEN.pattern})"  # a node name token or a wildcard
 NODE_KEY_PATTERN = f"^/?{_TOKEN}(/{_TOKEN})*$"
-ENTRY_KEY_PATTERN = "^[A-Za-z0-9_-]+$"  # the key of a mapped entry: naming.ENTRY_KEY_TEXT
+ENTRY_KEY_PATTERN = f"^{ENTRY_KEY_TEXT.pattern}$"  # the key of a mapped entry
 # Parameters every rclpy node declares itself; a params file may set them for any node.
 BUILTIN_PARAMETERS: dict[str, dict[str, Any]] = {
     "use_sim_time": {"type": "boolean", "description": "Use /clock for time (every ROS node)."},
@@ -68,11 +67,8 @@ def params_file_schema(schema: Schema, *, partial: bool = False) -> dict[str, An
         definitions[_group_name(group)] = _group_schema(group, old_names, required=not partial)
         if group.mapped_over:
             definitions[_map_name(group)] = _map_schema(group)
-    compiled = compiled_params(schema)
     for parameter in schema.parameters:
-        definitions[_parameter_name(parameter)] = parameter_schema(
-            parameter, compiled[parameter.ros_name]
-        )
+        definitions[_parameter_name(parameter)] = parameter_schema(parameter)
     return {
         "$schema": DRAFT,
         "title": f"ROS 2 params file for {schema.name}",
@@ -247,7 +243,7 @@ class _OldNames:
         return properties
 
 
-def parameter_schema(parameter: Parameter, compiled: CompiledParam | None = None) -> dict[str, Any]:
+def parameter_schema(parameter: Parameter) -> dict[str, Any]:
     """The value schema of one parameter, with hover text and its default."""
     param_type = parameter.type
     kind = param_type.scalar_kind
@@ -260,7 +256,7 @@ def parameter_schema(parameter: Parameter, compiled: CompiledParam | None = None
         result: dict[str, Any] = {"type": "array", "items": items}
     else:
         result = {"type": _JSON_TYPES[kind]}
-    for check in (compiled or compiled_param(parameter)).checks:
+    for check in parameter.compiled.checks:
         for keyword, value in _keywords(check, is_string=param_type.name == "string"):
             _add(result, keyword, value)
     result["description"] = hover_text(parameter)
@@ -276,7 +272,7 @@ def parameter_schema(parameter: Parameter, compiled: CompiledParam | None = None
 
 def hover_text(parameter: Parameter) -> str:
     lines = list(parameter_comment(parameter))
-    facts = [f"Type: {parameter.type.name}."]
+    facts = [parameter.stated("type")]
     if parameter.type.scalar_kind == "double":
         facts.append("Write a decimal point (30.0, not 30): ROS does not convert.")
     if parameter.required:

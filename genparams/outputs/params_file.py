@@ -176,16 +176,10 @@ def _reads_back(parameter: Parameter) -> bool:
 
 def parameter_comment(parameter: Parameter) -> tuple[str, ...]:
     """Description, then unit, constraints, read-only and deprecation in one line."""
-    facts = []
-    if parameter.unit:
-        facts.append(f"Unit: {parameter.unit}.")
-    if parameter.all_constraints_text:
-        facts.append(f"Constraints: {parameter.all_constraints_text}.")
-    if parameter.read_only:
-        facts.append("Read-only.")
+    facts = [parameter.stated("unit", "constraints", "read_only")]
     if parameter.deprecated:
         facts.append(f"Deprecated: {parameter.deprecated}")
     lines = comment_lines(parameter.description)
-    if facts:
-        lines += comment_lines(" ".join(facts))
+    if any(facts):
+        lines += comment_lines(" ".join(f for f in facts if f))
     return lines

@@ -9,7 +9,10 @@ from collections.abc import Sequence
 # One token of a ROS parameter name. ROS also accepts a leading underscore;
 # genparams reserves those for the generated classes' internals.
 ROS_TOKEN = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
-SCHEMA_NAME = re.compile(r"[a-z][a-z0-9_]*")
+# Schema names and rule names: snake_case (schemas/genparams.schema.json states it too).
+SNAKE_CASE = re.compile(r"[a-z][a-z0-9_]*")
+SCHEMA_NAME = SNAKE_CASE
+RULE_NAME = SNAKE_CASE
 
 # Methods of the generated top-level class: a top-level parameter or namespace
 # with one of these names would hide them.
@@ -94,3 +97,45 @@ def strip_prefix(prefix: str, full_name: str) -> str | None:
         return full_name
     head = prefix + "."
     return full_name[len(head) :] if full_name.startswith(head) else None
+
+
+# Node names in params files and on the command line. A token of a node or namespace
+# name (rcl's rule): a letter or '_' first. ROS prepends "/" when it is missing.
+NODE_TOKEN = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+WILDCARD_ONE = "*"  # in a params-file section's node name: exactly one name token
+WILDCARD_ANY = "**"  # zero or more name tokens
+
+
+def absolute(name: str) -> str:
+    return name if name.startswith("/") else "/" + name
+
+
+def node_pattern_problem(pattern: str) -> str | None:
+    """Why ROS refuses ``pattern`` as the node name of a params-file section, or None.
+
+    ``*`` stands for one name token and ``**`` for any number of them.
+    """
+    return _name_problem(absolute(pattern), wildcards=True)
+
+
+def node_name_problem(name: str) -> str | None:
+    """Why ``name`` is not a fully qualified node name such as ``/ns/camera``, or None."""
+    return _name_problem(absolute(name), wildcards=False)
+
+
+def _name_problem(name: str, *, wildcards: bool) -> str | None:
+    if name == "/":
+        return "node name must not be empty"
+    tokens = name[1:].split("/")
+    for index, token in enumerate(tokens):
+        last = index == len(tokens) - 1
+        if token == "":
+            return "node name must not be empty" if last else "contains repeated forward slash"
+        if wildcards and token in (WILDCARD_ONE, WILDCARD_ANY):
+            continue
+        if NODE_TOKEN.fullmatch(token) is None:
+            what = "node name" if last else "namespace"
+            if token[0].isdigit():
+                return f"{what} must not start with a number: {token!r}"
+            return f"{what} {token!r} may hold only letters, digits and '_'"
+    return None

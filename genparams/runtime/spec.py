@@ -24,7 +24,8 @@ class ParamSpec:
     description: str = ""
     read_only: bool = False
     unit: str = ""
-    range: tuple[Any, Any, Any] | None = None  # (min, max, step)
+    # (min, max) or (min, max, step); a missing step means any value in between.
+    range: tuple[Any, Any] | tuple[Any, Any, Any] | None = None
     choices: tuple[Any, ...] | None = None
     validators: tuple[tuple[str, Any], ...] = ()
     additional_constraints: str = ""
@@ -103,12 +104,21 @@ class CompiledParam:
         return first if isinstance(first, RosRange) and not first.each else None
 
     @property
-    def constraints_text(self) -> str:
-        ros_range = self.ros_range
-        parts = [c.describe() for c in self.checks if c is not ros_range]
+    def constraints(self) -> tuple[str, ...]:
+        """Every rule of this parameter in plain words, in checking order: the one text that
+        docstrings, docs, default params files, JSON Schema and descriptors all state."""
+        parts = [check.describe() for check in self.checks]
         if self.spec.additional_constraints:
             parts.append(self.spec.additional_constraints)
-        return "; ".join(parts)
+        return tuple(parts)
+
+    @property
+    def constraints_text(self) -> str:
+        """The descriptor's additional_constraints: ``constraints`` less a scalar range,
+        which travels in the descriptor's own range fields."""
+        if self.ros_range is None:
+            return "; ".join(self.constraints)
+        return "; ".join(self.constraints[1:])
 
     @property
     def descriptor_description(self) -> str:
@@ -122,7 +132,8 @@ def compile_param(spec: ParamSpec, extra_checks: tuple[Validator, ...] = ()) -> 
     param_type = TYPES[spec.type]
     checks: list[Validator] = []
     if spec.range is not None:
-        low, high, step = spec.range
+        low, high, *steps = spec.range
+        step = steps[0] if steps else 0
         checks.append(
             RosRange(
                 low,

@@ -13,22 +13,28 @@ from collections.abc import Collection, Iterable, Iterator
 from typing import Any
 
 from genparams.runtime import naming
+from genparams.runtime.suggest import did_you_mean
 from genparams.runtime.types import INT64_MAX, INT64_MIN, TYPES, ParamType, ValueTypeError
 from genparams.runtime.validators import (
     KINDS,
-    OneOf,
+    Custom,
     RosRange,
-    SubsetOf,
     Validator,
     ValidatorArgumentError,
     build_validator,
 )
 from genparams.schema.errors import SchemaError, SchemaProblem
 from genparams.schema.loader import LoadedDocument, Path, dotted
-from genparams.schema.model import Group, Parameter, RangeSpec, Schema, ValidatorSpec
+from genparams.schema.model import (
+    Group,
+    Parameter,
+    RangeSpec,
+    Schema,
+    ValidatorSpec,
+    with_entry_keys,
+)
 from genparams.schema.references import check_aliases, check_maps
 from genparams.schema.rule_builder import build_rules
-from genparams.schema.schema_check import did_you_mean
 
 FOR_EACH = "for_each"
 
@@ -95,6 +101,7 @@ class _ModelBuilder:
         check_aliases(root, self.aliases, self.problem)
         rules, rule_problems = build_rules(self.document, root.walk_parameters(), self.is_unbuilt)
         self.problems.extend(rule_problems)
+        root = with_entry_keys(root)
         return Schema(
             name=name,
             description=data.get("description", ""),
@@ -241,22 +248,6 @@ class _ModelBuilder:
         choices = self.choices(leaf, doc_path, param_type)
         validators = self.validators(leaf, doc_path, param_type)
 
-        checks: list[tuple[str, Validator]] = []
-        if value_range is not None:
-            checks.append(("range", self.range_validator(value_range, param_type)))
-        if choices is not None:
-            checks.append(("choices", SubsetOf(choices) if param_type.is_array else OneOf(choices)))
-        checks.extend(
-            ("validators", build_validator(spec.rule, spec.argument, param_type.name))
-            for spec in validators
-            if spec.rule != "custom"
-        )
-        if default_ok:
-            for key, check in checks:
-                reason = check(default)
-                if reason is not None:
-                    self.problem((*doc_path, "default"), f"default violates {key}: {reason}")
-        self.check_satisfiable(doc_path, param_type, checks)
         parameter = Parameter(
             ros_name=".".join(path),
             path=path,
@@ -275,20 +266,25 @@ class _ModelBuilder:
             aliases=tuple(leaf.get("aliases", ())),
             location=self.document.key_location(doc_path),
         )
+        # The runtime's own checks, compiled once: they judge the default here, and the
+        # model keeps them to word each constraint in every output.
+        kinds = ["range"] * (value_range is not None) + ["choices"] * (choices is not None)
+        kinds += ["validators"] * len(validators)
+        checks = [
+            (key, check)
+            for key, check in zip(kinds, parameter.compiled.checks, strict=True)
+            if not isinstance(check, Custom)  # user code runs on a node, not in the generator
+        ]
+        if default_ok:
+            for key, check in checks:
+                reason = check(default)
+                if reason is not None:
+                    self.problem((*doc_path, "default"), f"default violates {key}: {reason}")
+        self.check_satisfiable(doc_path, param_type, checks)
         self.leaf_paths[parameter.ros_name] = doc_path
         for index, alias in enumerate(parameter.aliases):
             self.aliases.append((alias, (*doc_path, "aliases", index), parameter))
         return parameter
-
-    @staticmethod
-    def range_validator(value_range: RangeSpec, param_type: ParamType) -> RosRange:
-        return RosRange(
-            value_range.min,
-            value_range.max,
-            value_range.step,
-            integer=param_type.scalar_kind == "int",
-            each=param_type.is_array,
-        )
 
     def range(
         self, leaf: dict[str, Any], doc_path: Path, param_type: ParamType
@@ -404,11 +400,11 @@ class _ModelBuilder:
             if rule in ("one_of", "subset_of") and isinstance(argument, tuple):
                 argument = self.typed_choices(path, argument, param_type)
             try:
-                validator = build_validator(rule, argument, param_type.name)
+                build_validator(rule, argument, param_type.name)  # its argument errors, here
             except ValidatorArgumentError as exc:
                 self.problem(path, str(exc))
                 continue
-            specs.append(ValidatorSpec(rule, argument, validator.describe()))
+            specs.append(ValidatorSpec(rule, argument))
         return tuple(specs)
 
     def typed_choices(
