@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from genparams import __version__
 from genparams.outputs.params_file import ParamsFile, default_params_file
 from genparams.outputs.yaml_text import value_text
+from genparams.runtime.lifecycle_text import CONFIGURE_ONLY_TEXT
 from genparams.runtime.naming import ENTRY_KEY
 from genparams.runtime.spec import CompiledParam
 from genparams.schema.model import Group, Parameter, Schema
@@ -123,6 +124,8 @@ def parameter_doc(parameter: Parameter, compiled: CompiledParam | None = None) -
     constraints = [check.describe() for check in checks]
     if parameter.additional_constraints:
         constraints.append(parameter.additional_constraints)
+    if parameter.configure_only:
+        constraints.append(CONFIGURE_ONLY_TEXT)
     return ParameterDoc(
         name=parameter.ros_name,
         type_name=parameter.type.name,

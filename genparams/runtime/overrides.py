@@ -8,6 +8,8 @@ from typing import Any
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
+from genparams.runtime.rclpy_internals import parameter_overrides
+
 _MISSING = object()
 
 
@@ -29,8 +31,8 @@ class OverrideReader:
         self.node = node
         self.full_name = full_name
         self.old_names = old_names or {}
-        # rclpy exposes overrides only through this attribute.
-        self.overrides: dict[str, Parameter] = getattr(node, "_parameter_overrides", {})
+        # rclpy exposes overrides only through a private attribute.
+        self.overrides: dict[str, Parameter] = parameter_overrides(node)
         self.problems: list[str] = []
         self.predeclared: list[str] = []  # full names
         self.renamed: list[tuple[str, str]] = []  # (old full name, full name) an override used

@@ -6,6 +6,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+from genparams.runtime.lifecycle_text import CONFIGURE_ONLY_TEXT
 from genparams.runtime.naming import ENTRY_KEY, ENTRY_KEY_RULE, attribute_name, entry_key_problem
 from genparams.runtime.rules import CompiledRule, RuleError, compile_rule, rules_by_parameter
 from genparams.runtime.types import TYPES, ParamType
@@ -30,6 +31,7 @@ class ParamSpec:
     additional_constraints: str = ""
     deprecated: str = ""
     aliases: tuple[str, ...] = ()  # old dotted names, relative to the prefix
+    configure_only: bool = False  # lifecycle nodes: set only while unconfigured or inactive
 
 
 @dataclass(frozen=True)
@@ -108,6 +110,8 @@ class CompiledParam:
         parts = [c.describe() for c in self.checks if c is not ros_range]
         if self.spec.additional_constraints:
             parts.append(self.spec.additional_constraints)
+        if self.spec.configure_only:
+            parts.append(CONFIGURE_ONLY_TEXT)
         return "; ".join(parts)
 
     @property

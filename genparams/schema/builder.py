@@ -274,6 +274,7 @@ class _ModelBuilder:
             deprecated=leaf.get("deprecated", ""),
             aliases=tuple(leaf.get("aliases", ())),
             location=self.document.key_location(doc_path),
+            configure_only=leaf.get("configure_only", False),
         )
         self.leaf_paths[parameter.ros_name] = doc_path
         for index, alias in enumerate(parameter.aliases):

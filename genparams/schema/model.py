@@ -10,6 +10,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import Any
 
+from genparams.runtime.lifecycle_text import CONFIGURE_ONLY_TEXT
 from genparams.runtime.naming import ENTRY_KEY
 from genparams.runtime.types import ParamType
 from genparams.runtime.validators import RosRange
@@ -54,6 +55,7 @@ class Parameter:
     deprecated: str
     aliases: tuple[str, ...]  # old dotted names, relative to the prefix
     location: Location
+    configure_only: bool = False  # lifecycle nodes: set only while unconfigured or inactive
 
     @property
     def annotation(self) -> str:
@@ -113,6 +115,8 @@ class Parameter:
         parts.extend(v.description for v in self.validators)
         if self.additional_constraints:
             parts.append(self.additional_constraints)
+        if self.configure_only:
+            parts.append(CONFIGURE_ONLY_TEXT)
         return "; ".join(parts)
 
     @property
@@ -133,6 +137,7 @@ class Parameter:
             ("additional_constraints", self.additional_constraints, ""),
             ("deprecated", self.deprecated, ""),
             ("aliases", self.aliases, ()),
+            ("configure_only", self.configure_only, False),
         ):
             if value != empty:
                 options.append((key, value))
