@@ -47,6 +47,7 @@ CLASSES = {"a": ("limits_a", "lo", "hi"), "b": ("limits_b", "level", "cap")}
 NAMES = [f"{prefix}.{n}" for prefix, (_, low, high) in CLASSES.items() for n in (low, high)]
 POISON = 13  # a value that makes "raise" callbacks raise, on direct sets only
 INT = Parameter.Type.INTEGER
+NESTED_PER_STEP = 8
 
 names = st.sampled_from(NAMES)
 values = st.integers(0, 100).filter(lambda v: v != POISON)
@@ -69,7 +70,9 @@ class CommitMachine(RuleBasedStateMachine):
         for prefix, view in self.views.items():
             view.on_change(self.recorder(prefix))
         self.client: ServiceClient | None = None
-        self.depth = 0  # nesting of sets started by callbacks, bounded to end every chain
+        # Sets callbacks may start per step: two subscribers that set one parameter to
+        # different values would otherwise ping-pong for ever (as they would without genparams).
+        self.budget = 0
 
     def recorder(self, prefix: str) -> Any:
         def record(changes: Changes[Any]) -> None:
@@ -85,18 +88,15 @@ class CommitMachine(RuleBasedStateMachine):
         return self.client
 
     def nested(self, name: str, value: int, atomic_with: str | None = None) -> None:
-        if self.depth >= 3:
+        if self.budget <= 0:
             return
-        self.depth += 1
-        try:
-            request = [Parameter(name, INT, value)]
-            if atomic_with is not None and atomic_with != name:
-                request.append(Parameter(atomic_with, INT, 100 - value))
-                self.node.set_parameters_atomically(request)
-            else:
-                self.node.set_parameters(request)
-        finally:
-            self.depth -= 1
+        self.budget -= 1
+        request = [Parameter(name, INT, value)]
+        if atomic_with is not None and atomic_with != name:
+            request.append(Parameter(atomic_with, INT, 100 - value))
+            self.node.set_parameters_atomically(request)
+        else:
+            self.node.set_parameters(request)
 
     # -- callbacks -------------------------------------------------------------------
 
@@ -175,6 +175,7 @@ class CommitMachine(RuleBasedStateMachine):
 
     @rule(name=names, value=st.integers(0, 100))
     def set_one_on_the_node(self, name: str, value: int) -> None:
+        self.budget = NESTED_PER_STEP
         try:
             self.node.set_parameters([Parameter(name, INT, value)])
         except PoisonedError:
@@ -182,6 +183,7 @@ class CommitMachine(RuleBasedStateMachine):
 
     @rule(pairs=st.lists(st.tuples(names, st.integers(0, 100)), min_size=1, max_size=4))
     def set_atomically_on_the_node(self, pairs: list[tuple[str, int]]) -> None:
+        self.budget = NESTED_PER_STEP
         request = [Parameter(n, INT, v) for n, v in dict(pairs).items()]
         try:
             self.node.set_parameters_atomically(request)
@@ -190,6 +192,7 @@ class CommitMachine(RuleBasedStateMachine):
 
     @rule(pairs=st.lists(st.tuples(names, values), min_size=1, max_size=4), atomic=st.booleans())
     def set_through_the_services(self, pairs: list[tuple[str, int]], atomic: bool) -> None:
+        self.budget = NESTED_PER_STEP
         request = [Parameter(n, INT, v) for n, v in dict(pairs).items()]
         if atomic:
             self.service().set_atomically(*request)
@@ -248,6 +251,7 @@ def test_the_machine_reaches_nested_sets(
     CommitMachine.harness = ros_harness
     CommitMachine.classes = limit_classes
     machine = CommitMachine()
+    machine.budget = NESTED_PER_STEP
     try:
         machine.on_change_sets_another("a.hi", "b.cap", 90, None)
         machine.post_set_clamps("b.cap", 70)
