@@ -203,8 +203,8 @@ class Binding(Generic[P]):
 
     def reshape(self, updates: dict[CompiledParam, Any]) -> None:
         """Commit a change of mapped keys: the entries' plan, applied in one place."""
-        assert self.mapped is not None
-        plan = self.mapped.plan(self.current, updates)
+        mapped = self.mapped
+        plan = None if mapped is None else mapped.plan(self.current, updates)
         if plan is None or not self.apply(plan):
             # Only a concurrent declaration gets here (the on-set round checked the
             # entries): the keys change, the entries keep their previous shape.
@@ -212,18 +212,20 @@ class Binding(Generic[P]):
 
     def apply(self, plan: EntryPlan) -> bool:
         """Declare and undeclare the plan's entries on the node, then commit its values."""
-        assert self.mapped is not None
+        mapped = self.mapped
+        if mapped is None:
+            return False
         full = self.full_name
         owned = self.owned
         # Removed entries leave the table first, so the check lets them go; added ones
         # join after, so their declaration round does not commit them one by one.
         dropped = {full(name): owned.pop(full(name)) for name in plan.undeclare}
-        if not self.mapped.replace_on_node(plan):
+        if not mapped.replace_on_node(plan):
             owned.update(dropped)
             return False
         owned.update((full(name), param) for name, param in plan.declare.items())
-        self.mapped.entries = plan.entries
-        spec = self.mapped.compiled.spec
+        mapped.entries = plan.entries
+        spec = mapped.compiled.spec
         before = self.current
         after = build_tree(
             type(before), spec.groups, plan.values, extra={"_binding": None}, maps=spec.maps
