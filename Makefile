@@ -6,7 +6,7 @@ VENV ?= .venv
 PYTHON := $(VENV)/bin/python
 EXAMPLE := examples/camera_node
 
-.PHONY: venv demo demo-arm tour test check lint typecheck golden docs bench bench-quick bench-profile clean
+.PHONY: venv browser demo demo-arm tour test check lint typecheck golden docs bench bench-quick bench-profile clean
 
 $(VENV)/.installed: pyproject.toml
 	python3 -m venv $(VENV)
@@ -15,6 +15,10 @@ $(VENV)/.installed: pyproject.toml
 	touch $@
 
 venv: $(VENV)/.installed
+
+## The browser tests of `genparams tune` drive Debian's Chromium (Playwright's own download is not used).
+browser:
+	@test -x /usr/bin/chromium || (apt-get update && apt-get install -y chromium)
 
 ## Generate the example's module and run the demo: a node in its own process, tuned over services.
 demo: venv
@@ -30,7 +34,7 @@ tour: venv
 	$(PYTHON) examples/motion/tour.py $(PART)
 
 ## Lint, type-check (package, examples and generated code) and run every test.
-test: venv lint typecheck
+test: venv browser lint typecheck
 	$(PYTHON) -m pytest -q
 
 lint: venv
@@ -50,8 +54,9 @@ docs: venv
 	$(PYTHON) -m sphinx -W --keep-going -b html docs build/docs/html
 
 ## Benchmarks against hand-written rclpy at 10 to 10,000 parameters: docs/benchmarks.md and .csv.
-bench: venv
+bench: venv browser
 	$(PYTHON) -m bench
+	$(PYTHON) -m bench.tune
 
 ## The benchmarks up to 1,000 parameters with three repeats, into build/bench-quick/.
 bench-quick: venv

@@ -8,16 +8,32 @@ from collections.abc import Sequence
 
 from genparams import __version__
 from genparams.commands import (
+    audit,
+    check_deployment,
     check_params,
     cmake_dir,
     defaults,
     docs,
+    explain,
     generate,
     json_schema,
+    tune,
     validate,
 )
 
-COMMANDS = (generate, validate, docs, defaults, json_schema, check_params, cmake_dir)
+COMMANDS = (
+    generate,
+    validate,
+    docs,
+    defaults,
+    json_schema,
+    check_params,
+    check_deployment,
+    explain,
+    tune,
+    audit,
+    cmake_dir,
+)
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -98,7 +98,10 @@ class Binding(Generic[P]):
             for name in parameters
             if (owner := sets.owner_of(full(name))) is not None
         ]
-        problems[:0] = [*clashes, *(p for p in reader.problems if not _names_clash(p, clashes))]
+        problems = [
+            *clashes,
+            *(p for p in reader.with_problems(problems) if not _names_clash(p, clashes)),
+        ]
         if problems:
             raise ParameterDeclarationError(spec.name, node.get_fully_qualified_name(), problems)
 

@@ -128,7 +128,7 @@ class MappedEntries:
         new_values, problems = resolve_values(
             self.compiled, reader.read(added), self.full_name, parameters=added
         )
-        problems[:0] = reader.problems
+        problems = reader.with_problems(problems)
         changed = ", ".join(self.full_name(name) for name in proposed)
         if problems:
             return [f"{changed}: cannot declare the new entries: " + "; ".join(problems)]
@@ -187,7 +187,7 @@ class MappedEntries:
         new_values, problems = resolve_values(
             self.compiled, given, self.full_name, parameters=added
         )
-        problems[:0] = reader.problems
+        problems = reader.with_problems(problems)
         if problems:
             binding.node.get_logger().error(
                 "mapped entries keep their previous keys: " + "; ".join(problems)

@@ -27,15 +27,22 @@ class Params(Group):
     _SPEC: ClassVar[SchemaSpec]
 
     @classmethod
-    def declare(cls, node: Node, prefix: str = "") -> Self:
+    def declare(cls, node: Node, prefix: str = "", *, publish_schema: bool = True) -> Self:
         """Declare every parameter on ``node`` (under ``prefix``) and return the live view.
 
         Raises ParameterDeclarationError listing every invalid or missing
-        override; in that case nothing is declared.
+        override; in that case nothing is declared. With ``publish_schema`` the
+        node describes itself on ``~/genparams/schema`` (a latched std_msgs/String
+        of JSON, merged over every class declared on the node).
         """
         from genparams.runtime.binding import Binding
 
-        return Binding.declare(cls, node, prefix).live
+        live = Binding.declare(cls, node, prefix).live
+        if publish_schema:
+            from genparams.runtime.schema_topic import publish_schema as publish
+
+            publish(node, compile_schema(cls._SPEC), prefix)
+        return live
 
     @classmethod
     def remote(cls, node: Node, target: str, prefix: str = "") -> RemoteParams[Self]:

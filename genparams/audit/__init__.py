@@ -1,0 +1,1 @@
+"""genparams audit: check a running graph against the schemas its nodes publish."""

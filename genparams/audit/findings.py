@@ -1,0 +1,37 @@
+"""What an audit found: one record per problem or drift, with the message built from fields."""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass
+from typing import Any
+
+VIOLATION = "violation"  # a value the schema forbids: exit 1
+DRIFT_DEFAULT = "drift-from-default"
+DRIFT_FILE = "drift-from-file"
+NO_SCHEMA = "no-schema"
+UNREACHABLE = "unreachable"  # published a schema but its services did not answer: exit 1
+NOT_CHECKED = "not-checked"  # a custom validator that cannot be imported here
+
+
+@dataclass(frozen=True)
+class Finding:
+    node: str
+    kind: str
+    parameter: str = ""
+    detail: str = ""
+    expected: Any = None
+    actual: Any = None
+
+    @property
+    def failing(self) -> bool:
+        return self.kind in (VIOLATION, UNREACHABLE)
+
+    def text(self) -> str:
+        where = f"{self.node}: {self.parameter}" if self.parameter else self.node
+        values = ""
+        if self.kind in (DRIFT_DEFAULT, DRIFT_FILE):
+            values = f" (expected {self.expected!r}, found {self.actual!r})"
+        return f"{where}: {self.detail}{values} [{self.kind}]"
+
+    def as_json(self) -> dict[str, Any]:
+        return asdict(self)

@@ -1,0 +1,135 @@
+"""Check live values against a published schema with the runtime's own validators and rules.
+
+The schema message carries each validator in its schema spelling, so the audit
+rebuilds exactly the checks the node runs (``compile_param``) and the rules it
+evaluates (``compile_rule``), without the schema file.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Mapping
+from typing import Any
+
+from genparams.audit.findings import DRIFT_DEFAULT, NOT_CHECKED, VIOLATION, Finding
+from genparams.runtime.naming import strip_prefix
+from genparams.runtime.rules import RuleError, compile_rule
+from genparams.runtime.spec import CompiledParam, ParamSpec, compile_param
+from genparams.runtime.types import TYPES
+from genparams.runtime.validators import Custom
+
+
+def frozen(value: Any) -> Any:
+    """JSON lists as the tuples a ParamSpec holds (dicts, such as length's, stay)."""
+    if isinstance(value, list):
+        return tuple(frozen(item) for item in value)
+    return value
+
+
+def param_from_json(described: Mapping[str, Any], name: str) -> ParamSpec:
+    kind = TYPES[described["type"]]
+    default = None if described["required"] else kind.coerce_default(described["default"])
+    span = described.get("range")
+    return ParamSpec(
+        name=name,
+        type=described["type"],
+        default=default,
+        required=described["required"],
+        read_only=described["read_only"],
+        range=None if span is None else (span["min"], span["max"], span["step"]),
+        choices=None if described["choices"] is None else frozen(described["choices"]),
+        validators=tuple((rule, frozen(arg)) for rule, arg in described["validators"]),
+    )
+
+
+def importable(check: Any) -> bool:
+    if not isinstance(check, Custom):
+        return True
+    try:
+        check.resolve()
+    except Exception:  # any import failure means: cannot run it here
+        return False
+    return True
+
+
+def described_parameters(
+    described: Mapping[str, Any], values: Mapping[str, Any]
+) -> Iterator[tuple[str, Mapping[str, Any]]]:
+    """Every parameter a class covers, mapped entries expanded with the live keys."""
+    for param in described["parameters"]:
+        yield param["name"], param
+    for group in described["maps"]:
+        for key in values.get(group["for_each"]) or ():
+            for field in group["fields"]:
+                yield f"{group['path']}.{key}.{field['name']}", field
+
+
+def check_class(
+    node: str, described: Mapping[str, Any], values: Mapping[str, Any]
+) -> list[Finding]:
+    findings: list[Finding] = []
+    typed: dict[str, Any] = {}
+    for name, param_json in described_parameters(described, values):
+        spec = param_from_json(param_json, name)
+        compiled = compile_param(spec)
+        if name not in values:
+            findings.append(
+                Finding(node, VIOLATION, name, "declared in the schema, not on the node")
+            )
+            continue
+        findings.extend(check_value(node, compiled, values[name], typed))
+    findings.extend(check_rules(node, described, typed))
+    return findings
+
+
+def check_value(
+    node: str, compiled: CompiledParam, raw: Any, typed: dict[str, Any]
+) -> list[Finding]:
+    name = compiled.name
+    try:
+        value = compiled.type.from_ros(raw)
+    except ValueError as exc:
+        return [Finding(node, VIOLATION, name, f"{exc}", compiled.spec.type, raw)]
+    typed[name] = value
+    found = []
+    for check in compiled.checks:
+        if not importable(check):
+            found.append(Finding(node, NOT_CHECKED, name, f"{check.describe()}: not importable"))
+            continue
+        reason = check(value)
+        if reason is not None:
+            found.append(Finding(node, VIOLATION, name, reason, check.describe(), raw))
+    spec = compiled.spec
+    if not spec.required and value != spec.default:
+        found.append(
+            Finding(node, DRIFT_DEFAULT, name, "differs from the schema default", spec.default, raw)
+        )
+    return found
+
+
+def check_rules(node: str, described: Mapping[str, Any], typed: Mapping[str, Any]) -> list[Finding]:
+    prefix = described["prefix"]
+    relative = {strip_prefix(prefix, name) or name: value for name, value in typed.items()}
+    types = {
+        strip_prefix(prefix, p["name"]) or p["name"]: p["type"] for p in described["parameters"]
+    }
+    found = []
+    for rule_json in described["rules"]:
+        try:
+            rule = compile_rule(rule_json["name"], rule_json["check"], "", types)
+        except RuleError as exc:
+            found.append(Finding(node, NOT_CHECKED, "", f"rule {rule_json['name']!r}: {exc}"))
+            continue
+        if not set(rule.parameters) <= relative.keys():
+            continue  # a parameter it reads is missing: reported above
+        shown = lambda n: f"{prefix}.{n}" if prefix else n  # noqa: E731
+        reason = rule.violation(relative, shown)
+        if reason is not None:
+            found.append(Finding(node, VIOLATION, "", reason, rule_json["check"]))
+    return found
+
+
+def check_node(node: str, schema: Mapping[str, Any], values: Mapping[str, Any]) -> list[Finding]:
+    findings = []
+    for described in schema.get("classes", []):
+        findings.extend(check_class(node, described, values))
+    return findings

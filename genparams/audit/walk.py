@@ -1,0 +1,130 @@
+"""Walk the live graph: every node, its published schema, its values through the services.
+
+Cost per node: one subscription to its latched schema topic (one message) and
+three service calls (list, get, describe parameters), all made from one node.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+from genparams.audit.deployment import file_drift
+from genparams.audit.findings import NO_SCHEMA, UNREACHABLE, Finding
+from genparams.audit.schema_checks import check_node
+from genparams.paramsfile.params_reader import ParamsDocument
+from genparams.runtime.schema_topic import SCHEMA_TOPIC_SUFFIX
+from genparams.tune.graph import Graph
+
+
+@dataclass
+class AuditResult:
+    findings: list[Finding] = field(default_factory=list)
+    audited: list[str] = field(default_factory=list)  # nodes that publish a schema
+    plain: list[str] = field(default_factory=list)  # nodes that do not
+    seconds: float = 0.0
+
+    @property
+    def failing(self) -> bool:
+        return any(finding.failing for finding in self.findings)
+
+
+def settled_nodes(
+    graph: Graph, settle: float, timeout: float, wanted: Sequence[str] = ()
+) -> list[str]:
+    """The node list once discovery is done, or ``timeout`` passed.
+
+    Named nodes: done when all of them appeared. Otherwise (discovery is gradual
+    and nothing says it is over): when the list stopped changing for ``settle`` s.
+    """
+    deadline = time.monotonic() + timeout
+    names = graph.node_names()
+    stable_since = time.monotonic()
+    while time.monotonic() < deadline:
+        if wanted and set(wanted) <= set(names):
+            break
+        time.sleep(0.05)
+        current = graph.node_names()
+        if current != names:
+            names, stable_since = current, time.monotonic()
+        elif not wanted and names and time.monotonic() - stable_since >= settle:
+            break
+    return names
+
+
+def schema_publishers(graph: Graph, names: Sequence[str], settle: float) -> list[str]:
+    """The nodes with a schema topic; a node's topics may be discovered after the node."""
+    deadline = time.monotonic() + settle
+
+    def found() -> list[str]:
+        topics = {topic for topic, _ in graph.node.get_topic_names_and_types()}
+        return [name for name in names if name + SCHEMA_TOPIC_SUFFIX in topics]
+
+    publishers = found()
+    while len(publishers) < len(names) and time.monotonic() < deadline:
+        time.sleep(0.05)
+        publishers = found()
+    return publishers
+
+
+BATCH = 16  # nodes read at once: their calls overlap, their clients stay few
+
+
+def read_batch(
+    graph: Graph, names: Sequence[str], timeout: float, result: AuditResult
+) -> list[tuple[str, dict[str, Any]]]:
+    """Values by node; a node that does not answer is a finding (read alone to tell which)."""
+    try:
+        read = graph.read_nodes(names, timeout)
+    except TimeoutError:
+        read = {}
+        for name in names:
+            try:
+                read[name] = graph.read_node(name, timeout)
+            except TimeoutError as exc:
+                result.findings.append(Finding(name, UNREACHABLE, "", str(exc)))
+    finally:
+        for name in names:
+            graph.forget(name)
+    return [
+        (name, {p["name"]: p["value"] for p in parameters if p["type"] != "unset"})
+        for name, parameters in read.items()
+    ]
+
+
+def audit(
+    graph: Graph,
+    documents: Sequence[ParamsDocument] = (),
+    *,
+    only: Sequence[str] = (),
+    settle: float = 1.0,
+    timeout: float = 5.0,
+) -> AuditResult:
+    started = time.monotonic()
+    result = AuditResult()
+    names = settled_nodes(graph, settle, timeout, only)
+    if only:
+        names = [name for name in names if name in only]
+    publishers = schema_publishers(graph, names, settle)
+    graph.watch_schema_topics()
+    graph.wait_for_schemas(publishers, timeout)
+    to_read = []
+    for name in names:
+        schema = graph.schema(name) if name in publishers else None
+        if schema is None:
+            result.plain.append(name)
+            result.findings.append(Finding(name, NO_SCHEMA, "", "publishes no genparams schema"))
+        else:
+            result.audited.append(name)
+        if schema is not None or documents:
+            to_read.append(name)
+    for start in range(0, len(to_read), BATCH):
+        for name, values in read_batch(graph, to_read[start : start + BATCH], timeout, result):
+            schema = graph.schema(name) if name in result.audited else None
+            if schema is not None:
+                result.findings.extend(check_node(name, schema, values))
+            result.findings.extend(file_drift(name, documents, values))
+    result.seconds = time.monotonic() - started
+    return result

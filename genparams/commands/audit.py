@@ -1,0 +1,67 @@
+"""genparams audit [--params-file F ...] [--format text|json] [NODE...]: check a live graph."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from genparams.paramsfile.ros_yaml import absolute, node_name_problem
+
+
+def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    parser = subparsers.add_parser(
+        "audit",
+        help="check every running node that publishes a schema; exit 1 on any violation",
+    )
+    parser.add_argument("nodes", nargs="*", metavar="NODE", help="audit only these nodes")
+    parser.add_argument(
+        "--params-file",
+        action="append",
+        default=[],
+        type=Path,
+        metavar="FILE",
+        help="a deployment params file to compare against (repeatable; later files win)",
+    )
+    parser.add_argument("--format", choices=("text", "json"), default="text")
+    parser.add_argument(
+        "--settle",
+        type=float,
+        default=1.0,
+        metavar="SECONDS",
+        help="discovery is done when the node list is unchanged this long (default 1.0)",
+    )
+    parser.add_argument(
+        "--timeout",
+        type=float,
+        default=5.0,
+        metavar="SECONDS",
+        help="longest wait for discovery, a schema or a service answer (default 5.0)",
+    )
+    parser.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    for node in args.nodes:
+        problem = node_name_problem(absolute(node))
+        if problem is not None:
+            print(f"genparams audit: invalid node {node!r}: {problem}", file=sys.stderr)
+            return 2
+    from genparams.audit.deployment import DeploymentError, read_deployment
+    from genparams.audit.report import json_report, text_report
+    from genparams.audit.walk import audit
+    from genparams.tune.graph import Graph
+
+    try:
+        documents = read_deployment(args.params_file)
+    except DeploymentError as exc:
+        print(f"genparams audit: {exc}", file=sys.stderr)
+        return 2
+    graph = Graph("genparams_audit")
+    try:
+        only = tuple(absolute(n) for n in args.nodes)
+        result = audit(graph, documents, only=only, settle=args.settle, timeout=args.timeout)
+    finally:
+        graph.close()
+    sys.stdout.write(json_report(result) if args.format == "json" else text_report(result))
+    return 1 if result.failing else 0

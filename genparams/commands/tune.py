@@ -1,0 +1,52 @@
+"""genparams tune [--host H] [--port N] [--read-only] [NODE...]: tune live nodes in a browser."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from genparams.paramsfile.ros_yaml import absolute, node_name_problem
+
+
+def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    parser = subparsers.add_parser(
+        "tune",
+        help="serve a web page to tune the parameters of running nodes; prints its URL",
+    )
+    parser.add_argument("nodes", nargs="*", metavar="NODE", help="list only these nodes")
+    parser.add_argument(
+        "--host",
+        default="127.0.0.1",
+        help="address to bind (default 127.0.0.1); any other needs the token in the URL",
+    )
+    parser.add_argument("--port", type=int, default=8765, help="port (default 8765; 0: any)")
+    parser.add_argument("--read-only", action="store_true", help="serve a view-only page")
+    parser.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    for node in args.nodes:
+        problem = node_name_problem(absolute(node))
+        if problem is not None:
+            print(f"genparams tune: invalid node {node!r}: {problem}", file=sys.stderr)
+            return 2
+    from genparams.tune.server import TuneServer
+
+    server = TuneServer(
+        args.host,
+        args.port,
+        nodes=tuple(absolute(n) for n in args.nodes),
+        read_only=args.read_only,
+    )
+    try:
+        print(f"genparams tune: serving {server.start()}", flush=True)
+        if server.thread is not None:
+            server.thread.join()
+    except KeyboardInterrupt:
+        pass
+    except (OSError, RuntimeError) as exc:
+        print(f"genparams tune: {exc}", file=sys.stderr)
+        return 2
+    finally:
+        server.stop()
+    return 0

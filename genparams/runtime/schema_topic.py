@@ -1,0 +1,206 @@
+"""Self-describing nodes: every class declared on a node publishes its schema on a latched topic.
+
+One message per node on ``~/genparams/schema`` (std_msgs/String holding JSON),
+transient-local so a late subscriber (a tuning page, ``genparams audit``,
+``ros2 bag record``) gets it without asking. A node that declares a second
+class, or the same class under another prefix, republishes the merged message.
+
+The description is built from the runtime's compiled specs, never from the
+compiler: what is published is exactly what the node enforces. Validators and
+rules appear twice, in words (for people) and as their schema spelling (so a
+client can rebuild the same checks).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import threading
+import weakref
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from genparams import __version__
+from genparams.runtime.naming import ENTRY_KEY, join_prefix
+from genparams.runtime.spec import CompiledParam, CompiledSchema
+
+if TYPE_CHECKING:
+    from rclpy.node import Node
+    from rclpy.publisher import Publisher
+
+SCHEMA_TOPIC = "~/genparams/schema"
+"""Relative to the node: ``/ns/camera`` publishes on ``/ns/camera/genparams/schema``."""
+
+SCHEMA_TOPIC_SUFFIX = "/genparams/schema"
+FORMAT_VERSION = 1
+
+
+def json_value(value: Any) -> Any:
+    """A typed-view value as JSON: tuples become lists, bytes a list of ints."""
+    if isinstance(value, bytes):
+        return list(value)
+    if isinstance(value, tuple | list):
+        return [json_value(item) for item in value]
+    return value
+
+
+def describe_parameter(param: CompiledParam, name: str) -> dict[str, Any]:
+    spec = param.spec
+    ros_range = param.ros_range
+    described: dict[str, Any] = {
+        "name": name,
+        "type": spec.type,
+        "required": spec.required,
+        "default": None if spec.required else json_value(spec.default),
+        "description": spec.description,
+        "unit": spec.unit,
+        "read_only": spec.read_only,
+        "range": None,
+        "choices": None if spec.choices is None else json_value(spec.choices),
+        "validators": [[rule, json_value(argument)] for rule, argument in spec.validators],
+        "constraints": [check.describe() for check in param.checks],
+        "additional_constraints": spec.additional_constraints,
+        "deprecated": spec.deprecated,
+        "aliases": list(spec.aliases),
+    }
+    if spec.range is not None:
+        low, high, step = spec.range
+        described["range"] = {"min": low, "max": high, "step": step}
+    if ros_range is not None:
+        described["ros_range"] = True
+    return described
+
+
+def describe_class(compiled: CompiledSchema, prefix: str) -> dict[str, Any]:
+    """One declared class under one prefix, with full ROS names; mapped fields as templates."""
+
+    def full(name: str) -> str:
+        return join_prefix(prefix, name)
+
+    maps = []
+    for path, key_name in compiled.maps.items():
+        head = f"{path}.{ENTRY_KEY}."
+        fields = [
+            describe_parameter(param, name[len(head) :])
+            for name, param in compiled.templates.items()
+            if name.startswith(head)
+        ]
+        maps.append({"path": full(path), "for_each": full(key_name), "fields": fields})
+    body: dict[str, Any] = {
+        "class": compiled.spec.name,
+        "prefix": prefix,
+        "parameters": [
+            describe_parameter(param, full(name)) for name, param in compiled.parameters.items()
+        ],
+        "maps": maps,
+        "rules": [
+            {
+                "name": rule.name,
+                "check": rule.check,
+                "description": rule.description,
+                "parameters": [full(name) for name in rule.parameters],
+            }
+            for rule in compiled.rules
+        ],
+    }
+    body["hash"] = schema_hash(body)
+    return body
+
+
+def schema_hash(body: Mapping[str, Any]) -> str:
+    """A stable digest of a description: equal schemas under equal prefixes hash equal."""
+    return text_hash(json.dumps(body, sort_keys=True, separators=(",", ":"), default=str))
+
+
+def text_hash(text: str) -> str:
+    return hashlib.sha256(text.encode("utf-8")).hexdigest()[:16]
+
+
+@dataclass(frozen=True)
+class ClassText:
+    """A class's description as JSON text, and its hash."""
+
+    text: str
+    hash: str
+
+
+# Every node that declares a class under a prefix publishes the same description:
+# it is built once (about 25 us a parameter) and reused. Keyed by identity, as
+# compile_schema is; the entry keeps its CompiledSchema alive so the id stays its own.
+_CLASS_TEXTS: dict[tuple[int, str], tuple[CompiledSchema, ClassText]] = {}
+
+
+def class_text(compiled: CompiledSchema, prefix: str) -> ClassText:
+    key = (id(compiled), prefix)
+    cached = _CLASS_TEXTS.get(key)
+    if cached is None or cached[0] is not compiled:
+        body = describe_class(compiled, prefix)
+        cached = (compiled, ClassText(json.dumps(body, sort_keys=True), body["hash"]))
+        _CLASS_TEXTS[key] = cached
+    return cached[1]
+
+
+def node_message_text(node_name: str, classes: list[ClassText]) -> str:
+    """The node's message: the JSON of node_message, assembled from cached class texts."""
+    node_hash = schema_hash({"classes": [c.hash for c in classes]})
+    head = {"format": FORMAT_VERSION, "genparams": __version__, "hash": node_hash}
+    # Keys in sorted order, as json.dumps(sort_keys=True) would write them.
+    return (
+        '{"classes": ['
+        + ", ".join(c.text for c in classes)
+        + "], "
+        + json.dumps(head, sort_keys=True)[1:-1]
+        + f', "node": {json.dumps(node_name)}}}'
+    )
+
+
+class SchemaPublisher:
+    """The one latched publisher of a node, holding every class declared there."""
+
+    def __init__(self, node: Node) -> None:
+        from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
+        from std_msgs.msg import String
+
+        # The node's name, not the node: the registry below is keyed weakly by the node,
+        # and a value holding its key would keep every node ever declared alive.
+        self.node_name = node.get_fully_qualified_name()
+        self.classes: dict[tuple[str, str], ClassText] = {}
+        self.message_type = String
+        qos = QoSProfile(
+            depth=1,
+            history=HistoryPolicy.KEEP_LAST,
+            reliability=ReliabilityPolicy.RELIABLE,
+            durability=DurabilityPolicy.TRANSIENT_LOCAL,
+        )
+        self.publisher: Publisher = node.create_publisher(String, SCHEMA_TOPIC, qos)
+
+    @classmethod
+    def of(cls, node: Node) -> SchemaPublisher:
+        with _GUARD:
+            found = _PUBLISHERS.get(node)
+            if found is None:
+                found = _PUBLISHERS[node] = cls(node)
+            return found
+
+    def add(self, compiled: CompiledSchema, prefix: str) -> None:
+        self.classes[(prefix, compiled.spec.name)] = class_text(compiled, prefix)
+        self.publish()
+
+    def message_text(self) -> str:
+        ordered = [self.classes[key] for key in sorted(self.classes)]
+        return node_message_text(self.node_name, ordered)
+
+    def publish(self) -> None:
+        message = self.message_type()
+        message.data = self.message_text()
+        self.publisher.publish(message)
+
+
+_PUBLISHERS: weakref.WeakKeyDictionary[Node, SchemaPublisher] = weakref.WeakKeyDictionary()
+_GUARD = threading.Lock()
+
+
+def publish_schema(node: Node, compiled: CompiledSchema, prefix: str) -> None:
+    """Add a declared class to its node's schema message and republish it."""
+    SchemaPublisher.of(node).add(compiled, prefix)

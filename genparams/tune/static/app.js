@@ -1,0 +1,243 @@
+// The tuning page: node list, a node's form, edits applied through its parameter services.
+import { api } from "./api.js";
+import { problem } from "./checks.js";
+import { diffTable, el, mapGroup, row, section } from "./form.js";
+
+const page = { readOnly: false, node: null, view: null, pending: new Map(), reload: null };
+
+function status(text) { document.getElementById("status").textContent = text; }
+const liveMode = () => document.getElementById("live").checked;
+
+// What the page knows of each parameter: the schema's words, else the node's descriptor.
+function metas(schema, parameters) {
+  const byName = new Map();
+  const maps = [];
+  for (const described of schema?.classes || []) {
+    for (const p of described.parameters) byName.set(p.name, { ...p, schema: true });
+    maps.push(...described.maps);
+  }
+  const values = new Map(parameters.map((p) => [p.name, p.value]));
+  for (const group of maps) {
+    for (const key of values.get(group.for_each) || []) {
+      for (const field of group.fields)
+        byName.set(`${group.path}.${key}.${field.name}`, { ...field, schema: true, mapped: group.path, key });
+    }
+  }
+  for (const p of parameters) {
+    if (byName.has(p.name)) continue;
+    byName.set(p.name, { name: p.name, type: p.type, read_only: p.read_only, range: p.range,
+      description: p.description, constraints: p.constraints ? [p.constraints] : [], schema: false });
+  }
+  return { byName, maps, values };
+}
+
+function namespaceOf(name) {
+  const dot = name.lastIndexOf(".");
+  return dot < 0 ? "" : name.slice(0, dot);
+}
+
+function showError(name, text) {
+  const box = page.view?.form.querySelector(`[data-param-error="${CSS.escape(name)}"]`);
+  if (box) box.textContent = text || "";
+}
+
+function setControl(name, value) {
+  const control = page.view?.form.querySelector(`[data-param="${CSS.escape(name)}"]`);
+  control?.genparamsSet?.(value);
+}
+
+function renderDiff() {
+  const { byName, values } = page.view.known;
+  const rows = [];
+  for (const [name, meta] of byName) {
+    if (!meta.schema || meta.required || !values.has(name)) continue;
+    if (JSON.stringify(meta.default) !== JSON.stringify(values.get(name)))
+      rows.push([name, meta.default, values.get(name)]);
+  }
+  page.view.diff.replaceChildren(diffTable(rows));
+}
+
+async function applyEdits(edits, atomic) {
+  const { byName } = page.view.known;
+  const params = [];
+  let blocked = false;
+  for (const [name, value] of edits) {
+    const meta = byName.get(name);
+    const bad = problem(meta, value);
+    showError(name, bad ? `${name}: ${bad} (checked in the page, not sent)` : "");
+    blocked ||= Boolean(bad);
+    params.push({ name, type: meta.type, value });
+  }
+  if (blocked || !params.length) return false;
+  const node = page.node;
+  const { results } = await api.set(node, params, atomic);
+  if (node !== page.node) return false;
+  let ok = true;
+  for (const result of results) {
+    showError(result.name, result.successful ? "" : result.reason || "rejected by the node");
+    ok &&= result.successful;
+  }
+  status(ok ? `applied ${params.length} change(s)` : "the node rejected the change");
+  return ok;
+}
+
+function onEdit(name, value) {
+  if (liveMode()) {
+    applyEdits([[name, value]], false).then((ok) => {
+      if (!ok && !page.pending.has(name)) page.pending.set(name, value);
+      updateApplyButton();
+    });
+    return;
+  }
+  page.pending.set(name, value);
+  updateApplyButton();
+}
+
+function updateApplyButton() {
+  if (!page.view) return;
+  page.view.apply.textContent = `Apply ${page.pending.size} change(s) atomically`;
+  page.view.apply.disabled = page.readOnly || page.pending.size === 0;
+}
+
+async function applyPending() {
+  const ok = await applyEdits([...page.pending], true);
+  if (ok) { page.pending.clear(); updateApplyButton(); }
+}
+
+function onReset(name) {
+  const meta = page.view.known.byName.get(name);
+  setControl(name, meta.default);
+  onEdit(name, meta.default);
+}
+
+function setKeys(group, keys) {
+  applyEdits([[group.for_each, keys]], false);
+}
+
+function renderNode(data) {
+  page.pending.clear();
+  const known = metas(data.schema, data.parameters);
+  const handlers = { readOnly: page.readOnly, onEdit, onReset };
+  const rowFor = (name) => {
+    const meta = known.byName.get(name);
+    const label = meta.key !== undefined ? meta.name : name.slice(namespaceOf(name).length + (namespaceOf(name) ? 1 : 0));
+    return row(meta, name, label, known.values.get(name), { ...handlers, hasDefault: meta.schema && !meta.required });
+  };
+  const sections = new Map();
+  for (const name of [...known.values.keys()].sort()) {
+    const meta = known.byName.get(name);
+    if (meta.mapped !== undefined) continue;
+    const title = meta.schema ? namespaceOf(name) : "other parameters (not in the schema)";
+    if (!sections.has(title)) sections.set(title, []);
+    sections.get(title).push(name);
+  }
+  const order = [...sections.keys()].sort((a, b) => (a.startsWith("other") - b.startsWith("other")) || a.localeCompare(b));
+  // Builders, each with its row count: the first screenful is built at once, the rest in chunks.
+  const builders = order.map((t) => [sections.get(t).length, () => section(t, sections.get(t).map(rowFor))]);
+  for (const group of known.maps) {
+    const keys = known.values.get(group.for_each) || [];
+    builders.push([keys.length * group.fields.length, () => mapGroup(group, keys,
+      (key) => group.fields.map((f) => rowFor(`${group.path}.${key}.${f.name}`)),
+      { readOnly: page.readOnly,
+        onAddKey: (g, key) => setKeys(g, [...(known.values.get(g.for_each) || []), key]),
+        onRemoveKey: (g, key) => setKeys(g, (known.values.get(g.for_each) || []).filter((k) => k !== key)) })]);
+  }
+  const apply = el("button", { type: "button", "data-apply": true });
+  apply.addEventListener("click", applyPending);
+  const download = el("a", { href: api.paramsFileUrl(data.node), download: "", "data-download": true,
+    text: "Download params file" });
+  const diff = el("div", { class: "diff-box" });
+  const body = el("div", { class: "sections" });
+  const kind = data.schema ? `genparams ${data.schema.genparams} · schema ${data.schema.hash}` : "plain rclpy node";
+  const form = el("form", { "data-node": data.node, class: data.schema ? "genparams" : "plain" },
+    el("h2", { text: data.node }), el("p", { class: "hint", text: kind }),
+    el("div", { class: "toolbar" }, apply, download), body,
+    el("h3", { text: "Differences from the defaults" }), diff);
+  form.addEventListener("submit", (event) => event.preventDefault());
+  page.view = { form, known, apply, diff };
+  buildInChunks(body, builders, form);
+  document.getElementById("view").replaceChildren(form);
+  updateApplyButton();
+  renderDiff();
+}
+
+// Append sections until `budget` rows are in; the rest follow in chunks, a frame apart,
+// so a node with thousands of parameters is usable before its last section exists.
+function buildInChunks(body, builders, form, budget = 60) {
+  let next = 0;
+  const step = (limit) => {
+    let rows = 0;
+    while (next < builders.length && (rows === 0 || rows + builders[next][0] <= limit)) {
+      rows += builders[next][0];
+      body.append(builders[next++][1]());
+    }
+  };
+  step(budget);
+  return new Promise((resolve) => {
+    const more = () => {
+      if (page.view?.form !== form) return resolve();
+      if (next >= builders.length) {
+        form.dataset.complete = String(Math.round(performance.now()));
+        return resolve();
+      }
+      step(200);
+      setTimeout(more);
+    };
+    requestAnimationFrame(() => setTimeout(more));
+  });
+}
+
+async function openNode(name, loading = null) {
+  page.node = name;
+  for (const item of document.querySelectorAll("#nodes li"))
+    item.classList.toggle("selected", item.dataset.nodeLink === name);
+  status(`loading ${name}…`);
+  const data = await (loading || api.node(name));
+  if (page.node !== name) return;
+  renderNode(data);  // later sections follow on their own; the form says data-complete
+  status(`${data.parameters.length} parameters`);
+}
+
+function onEvent(event) {
+  if (!page.view || event.node !== page.node) return;
+  if (event.kind === "schema" || Object.keys(event.new || {}).length || (event.deleted || []).length) {
+    clearTimeout(page.reload);  // the set of parameters changed: build the form again
+    page.reload = setTimeout(() => openNode(page.node), 200);  // a declare sends one event per parameter
+    return;
+  }
+  for (const [name, value] of Object.entries(event.changed || {})) {
+    page.view.known.values.set(name, value);
+    if (!page.pending.has(name)) { setControl(name, value); showError(name, ""); }
+  }
+  renderDiff();
+}
+
+async function refreshNodes() {
+  const { nodes } = await api.nodes();
+  const list = document.getElementById("nodes");
+  const shown = [...list.children].map((li) => `${li.dataset.nodeLink}|${li.dataset.genparams}`).join();
+  if (shown === nodes.map((n) => `${n.name}|${n.genparams}`).join()) return;
+  list.replaceChildren(...nodes.map((n) => {
+    const link = el("a", { href: `#${n.name}`, text: n.name });
+    link.addEventListener("click", () => openNode(n.name));
+    return el("li", { "data-node-link": n.name, "data-genparams": String(n.genparams),
+      class: n.name === page.node ? "selected" : "" }, link, n.genparams ? el("span", { class: "badge", text: "schema" }) : null);
+  }));
+}
+
+async function main() {
+  // The node named in the address loads while the config and the node list are fetched.
+  const wanted = decodeURIComponent(window.location.hash.slice(1));
+  const loading = wanted ? api.node(wanted) : null;
+  const config = await api.config();
+  page.readOnly = config.read_only;
+  document.getElementById("mode").hidden = !page.readOnly;
+  api.events().onmessage = (message) => onEvent(JSON.parse(message.data));
+  await Promise.all([refreshNodes(), wanted ? openNode(wanted, loading) : null]);
+  setInterval(refreshNodes, 1000);
+  // Milliseconds from navigation to a usable page, after the first paint of the form.
+  await new Promise((resolve) => requestAnimationFrame(() => setTimeout(resolve)));
+  document.body.dataset.ready = String(Math.round(performance.now()));
+}
+
+main().catch((error) => status(`error: ${error.message}`));

@@ -1,0 +1,149 @@
+// A node's form: one section per namespace, one row per parameter, a fieldset per mapped group.
+import { elementType, isArrayType } from "./checks.js";
+
+function el(tag, attrs = {}, ...children) {
+  const node = document.createElement(tag);
+  for (const [key, value] of Object.entries(attrs)) {
+    if (value === undefined || value === null || value === false) continue;
+    if (key === "text") node.textContent = value;
+    else if (key.startsWith("data-") || key === "for" || key === "title" || key === "class")
+      node.setAttribute(key, value === true ? "" : value);
+    else node[key] = value;
+  }
+  node.append(...children.filter((c) => c !== null && c !== undefined));
+  return node;
+}
+
+function numberOf(kind, text) {
+  if (text.trim() === "") return NaN;
+  return kind === "int" || kind === "byte" ? Number.parseInt(text, 10) : Number.parseFloat(text);
+}
+
+function scalarInput(kind, value, attrs) {
+  if (kind === "bool") return el("input", { type: "checkbox", checked: Boolean(value), ...attrs });
+  if (kind === "string") return el("input", { type: "text", value: value ?? "", ...attrs });
+  const step = kind === "double" ? "any" : "1";
+  return el("input", { type: "number", step, value: value ?? "", ...attrs });
+}
+
+function scalarValue(kind, input) {
+  if (kind === "bool") return input.checked;
+  if (kind === "string") return input.value;
+  return numberOf(kind, input.value);
+}
+
+// Array editors: one typed input per item, with add and remove.
+function arrayEditor(meta, name, value, disabled, onEdit) {
+  const kind = elementType(meta.type);
+  const box = el("div", { class: "array", "data-param": name, "data-type": meta.type });
+  const items = el("div", { class: "items" });
+  const read = () => [...items.querySelectorAll("input")].map((input) => scalarValue(kind, input));
+  const addItem = (item) => {
+    const input = scalarInput(kind, item, { disabled });
+    input.addEventListener("change", () => onEdit(name, read()));
+    const remove = el("button", { type: "button", class: "small", text: "−", title: "remove item", disabled });
+    remove.addEventListener("click", () => { row.remove(); onEdit(name, read()); });
+    const row = el("div", { class: "item" }, input, remove);
+    items.append(row);
+  };
+  (value || []).forEach(addItem);
+  const add = el("button", { type: "button", class: "small", text: "+ item", disabled });
+  add.addEventListener("click", () => { addItem(kind === "bool" ? false : kind === "string" ? "" : 0); });
+  box.append(items, add);
+  box.genparamsSet = (next) => { items.replaceChildren(); (next || []).forEach(addItem); };
+  return box;
+}
+
+function control(meta, name, value, disabled, onEdit) {
+  const kind = meta.type;
+  if (isArrayType(kind)) return arrayEditor(meta, name, value, disabled, onEdit);
+  const id = `p-${name}`;
+  if (meta.choices) {
+    const select = el("select", { id, "data-param": name, disabled },
+      ...meta.choices.map((c) => el("option", { value: String(c), text: String(c) })));
+    select.value = String(value);
+    const parse = (text) => (kind === "string" ? text : numberOf(kind, text));
+    select.addEventListener("change", () => onEdit(name, parse(select.value)));
+    select.genparamsSet = (next) => { select.value = String(next); };
+    return select;
+  }
+  if ((kind === "int" || kind === "double") && meta.range) {
+    const { min, max, step } = meta.range;
+    const sliderStep = step > 0 ? step : kind === "int" ? 1 : (max - min) / 1000;
+    const slider = el("input", { id, type: "range", min, max, step: sliderStep, value, disabled, "data-param": name });
+    const number = el("input", { type: "number", step: step > 0 ? step : kind === "int" ? 1 : "any",
+      value, disabled, "data-param-box": name });
+    slider.addEventListener("input", () => { number.value = slider.value; });
+    slider.addEventListener("change", () => onEdit(name, numberOf(kind, slider.value)));
+    number.addEventListener("change", () => {
+      slider.value = number.value;
+      onEdit(name, numberOf(kind, number.value));
+    });
+    const pair = el("span", { class: "slider" }, slider, number);
+    slider.genparamsSet = (next) => { slider.value = next; number.value = next; };
+    pair.genparamsControl = slider;
+    return pair;
+  }
+  const input = scalarInput(kind, value, { id, disabled, "data-param": name });
+  input.addEventListener("change", () => onEdit(name, scalarValue(kind, input)));
+  input.genparamsSet = (next) => {
+    if (kind === "bool") input.checked = Boolean(next); else input.value = next;
+  };
+  return input;
+}
+
+function help(meta) {
+  const words = [meta.description, ...(meta.constraints || [])].filter(Boolean);
+  if (meta.deprecated) words.push(`deprecated: ${meta.deprecated}`);
+  return words.join(" · ");
+}
+
+export function row(meta, name, label, value, { readOnly, onEdit, onReset, hasDefault }) {
+  const disabled = readOnly || meta.read_only;
+  const widget = control(meta, name, value, disabled, onEdit);
+  const reset = hasDefault
+    ? el("button", { type: "button", class: "reset small", text: "↺", title: "reset to default",
+        "data-reset": name, disabled })
+    : null;
+  reset?.addEventListener("click", () => onReset(name));
+  return el("div", { class: "param", "data-row": name },
+    el("label", { for: `p-${name}`, title: name },
+      label, meta.required ? el("span", { class: "required", title: "required", text: " *" }) : null),
+    widget,
+    el("span", { class: "unit", text: meta.unit || "" }),
+    reset,
+    el("div", { class: "error", "data-param-error": name, role: "alert" }),
+    el("div", { class: "help", text: help(meta) }));
+}
+
+export function section(title, rows) {
+  return el("fieldset", { class: "section", "data-section": title },
+    el("legend", { text: title || "(top level)" }), ...rows);
+}
+
+export function mapGroup(group, keys, keyRows, { readOnly, onAddKey, onRemoveKey }) {
+  const entries = keys.map((key) => {
+    const remove = el("button", { type: "button", class: "small", text: "remove key",
+      "data-map-remove": `${group.path}.${key}`, disabled: readOnly });
+    remove.addEventListener("click", () => onRemoveKey(group, key));
+    return el("fieldset", { class: "entry", "data-entry": `${group.path}.${key}` },
+      el("legend", {}, `${group.path}.${key} `, remove), ...keyRows(key));
+  });
+  const input = el("input", { type: "text", placeholder: "new key", "data-map-add": group.path, disabled: readOnly });
+  const add = el("button", { type: "button", class: "small", text: "add key",
+    "data-map-add-button": group.path, disabled: readOnly });
+  add.addEventListener("click", () => { if (input.value) onAddKey(group, input.value); });
+  return el("fieldset", { class: "section map", "data-map": group.path },
+    el("legend", { text: `${group.path} (one entry per item of ${group.for_each})` }),
+    ...entries, el("div", { class: "add-key" }, input, add));
+}
+
+export function diffTable(rows) {
+  if (!rows.length) return el("p", { class: "hint", "data-diff-empty": true, text: "All values are at their defaults." });
+  return el("table", { class: "diff" },
+    el("thead", {}, el("tr", {}, ...["parameter", "default", "current"].map((t) => el("th", { text: t })))),
+    el("tbody", {}, ...rows.map(([name, def, cur]) => el("tr", { "data-diff": name },
+      el("td", { text: name }), el("td", { text: JSON.stringify(def) }), el("td", { text: JSON.stringify(cur) })))));
+}
+
+export { el };

@@ -1,0 +1,124 @@
+"""Real nodes for the tuning and audit tests, in a process of their own.
+
+``python -m tests.tune.demo_nodes NAME:KIND ...`` starts one node per argument
+(KIND: camera, arm, motion, plain, loose, or wideN with N parameters) and prints
+"ready" once every node is declared. ROS arguments for every node follow ``--``.
+"""
+
+from __future__ import annotations
+
+import sys
+import tempfile
+from pathlib import Path
+
+import rclpy
+from rcl_interfaces.msg import FloatingPointRange, IntegerRange, ParameterDescriptor
+from rclpy.executors import MultiThreadedExecutor
+from rclpy.node import Node
+
+import genparams
+from tests.support import ROOT, import_file
+
+SCHEMAS = {
+    "camera": ROOT / "examples/camera_node/camera_driver.yaml",
+    "arm": ROOT / "examples/arm/arm.yaml",
+    "motion": ROOT / "examples/motion/motion.yaml",
+}
+
+
+def wide_schema(count: int) -> str:
+    """A schema of ``count`` ranged doubles in namespaces of 50, for the benchmark."""
+    lines = ["genparams: 1", "name: wide", "parameters:"]
+    for group in range(count // 50):
+        lines.append(f"  group_{group}:")
+        for index in range(50):
+            lines.append(
+                f"    p_{index}: {{type: double, default: 1.0, unit: m,"
+                f" range: {{min: 0.0, max: 10.0, step: 0.5}}, description: Value {index}.}}"
+            )
+    return "\n".join(lines) + "\n"
+
+
+def params_class(kind: str, workdir: Path) -> type:
+    if kind.startswith("wide"):
+        text = genparams.generate(workdir / "wide.yaml", wide_schema(int(kind[4:] or 1000)))
+    else:
+        text = genparams.generate(SCHEMAS[kind])
+    path = workdir / f"{kind}_params.py"
+    path.write_text(text, encoding="utf-8")
+    module = import_file(path)
+    return next(
+        value
+        for name, value in vars(module).items()
+        if name.endswith("Params") and isinstance(value, type) and hasattr(value, "_SPEC")
+    )
+
+
+def plain_node(name: str, args: list[str]) -> Node:
+    node = Node(name, cli_args=["--ros-args", *args] if args else None)
+    node.declare_parameter(
+        "gain",
+        2.0,
+        ParameterDescriptor(
+            description="Loop gain.",
+            floating_point_range=[FloatingPointRange(from_value=0.0, to_value=10.0, step=0.5)],
+        ),
+    )
+    node.declare_parameter(
+        "retries",
+        3,
+        ParameterDescriptor(integer_range=[IntegerRange(from_value=0, to_value=10, step=1)]),
+    )
+    node.declare_parameter("frame", "map", ParameterDescriptor(description="Frame id."))
+    node.declare_parameter("enabled", True)
+    node.declare_parameter("hardware_id", 7, ParameterDescriptor(read_only=True))
+    return node
+
+
+def loose_node(name: str, workdir: Path) -> Node:
+    """Describes itself with the motion schema but declares plain, unchecked parameters.
+
+    What a node in another language, or an older build, may do: the audit, not
+    the node, has to catch the values its schema forbids.
+    """
+    from genparams.runtime.schema_topic import publish_schema
+    from genparams.runtime.spec import compile_schema
+
+    spec = params_class("motion", workdir)._SPEC
+    node = Node(name)
+    for param in spec.parameters:
+        node.declare_parameter(param.name, param.default)
+    publish_schema(node, compile_schema(spec), "")
+    return node
+
+
+def main(argv: list[str]) -> int:
+    specs, ros_args = argv, []
+    if "--" in argv:
+        specs, ros_args = argv[: argv.index("--")], argv[argv.index("--") + 1 :]
+    rclpy.init()
+    executor = MultiThreadedExecutor()
+    workdir = Path(tempfile.mkdtemp(prefix="genparams-demo-"))
+    keep = []
+    for spec in specs:
+        name, _, kind = spec.partition(":")
+        if kind == "plain":
+            node = plain_node(name, ros_args)
+        elif kind == "loose":
+            node = loose_node(name, workdir)
+        else:
+            # The camera's serial has no default: it must come from an override.
+            own = ["-p", "serial:=CAM12345"] if kind == "camera" else []
+            node = Node(name, cli_args=["--ros-args", *own, *ros_args])
+            keep.append(params_class(kind, workdir).declare(node))
+        executor.add_node(node)
+    print("ready", flush=True)
+    try:
+        executor.spin()
+    except (KeyboardInterrupt, rclpy.executors.ExternalShutdownException):
+        pass
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,118 @@
+"""genparams audit against real nodes in two processes: a violation, a drift, a plain node."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+from rclpy.parameter import Parameter
+
+from genparams.audit.deployment import read_deployment
+from genparams.audit.findings import DRIFT_DEFAULT, DRIFT_FILE, NO_SCHEMA, VIOLATION
+from genparams.audit.walk import AuditResult, audit
+from genparams.tune.graph import Graph
+from tests.support import ROOT, RosHarness
+from tests.tune.support import demo_nodes, service_client, unique
+
+LOOSE, PLAIN, CAM, ARM = (f"/{unique(f'audit_{s}')}" for s in ("loose", "plain", "cam", "arm"))
+NODES = (LOOSE, PLAIN, CAM, ARM)
+
+
+@pytest.fixture(scope="module")
+def running(ros_harness: RosHarness) -> Iterator[None]:
+    with (
+        demo_nodes(f"{LOOSE[1:]}:loose", f"{PLAIN[1:]}:plain"),
+        demo_nodes(f"{CAM[1:]}:camera", f"{ARM[1:]}:arm"),
+    ):
+        # A value the schema forbids, set through the services as `ros2 param set` would.
+        loose = service_client(ros_harness, LOOSE)
+        results = loose.set(Parameter("max_speed", value=7.0), Parameter("weights", value=[0.5]))
+        assert all(r.successful for r in results)
+        yield
+
+
+@pytest.fixture(scope="module")
+def deployment(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    path = tmp_path_factory.mktemp("deploy") / "robot.yaml"
+    path.write_text(
+        f"{CAM}:\n  ros__parameters:\n    camera:\n      fps: 15.0\n      width: 640\n"
+        f"{ARM}:\n  ros__parameters:\n    max_speed: 1.0\n",
+        encoding="utf-8",
+    )
+    return path
+
+
+@pytest.fixture(scope="module")
+def result(running: None, deployment: Path) -> Iterator[AuditResult]:
+    graph = Graph(unique("audit_test"))
+    try:
+        yield audit(graph, read_deployment([deployment]), only=NODES, settle=0.3)
+    finally:
+        graph.close()
+
+
+def kinds(result: AuditResult, node: str) -> dict[str, set[str]]:
+    found: dict[str, set[str]] = {}
+    for finding in result.findings:
+        if finding.node == node:
+            found.setdefault(finding.kind, set()).add(finding.parameter)
+    return found
+
+
+def test_a_forbidden_value_and_a_broken_rule_are_violations(result: AuditResult) -> None:
+    assert result.failing
+    found = kinds(result, LOOSE)
+    assert found[VIOLATION] == {"max_speed", ""}  # the range, then the rule (no parameter)
+    texts = [f.text() for f in result.findings if f.node == LOOSE and f.kind == VIOLATION]
+    assert any("max_speed: 7.0 is out of range: within [0.0, 5.0]" in t for t in texts), texts
+    assert any("rule 'one_weight_per_topic' broken" in t for t in texts), texts
+    assert found[DRIFT_DEFAULT] == {"max_speed", "weights"}
+
+
+def test_drift_from_the_deployment_file(result: AuditResult, deployment: Path) -> None:
+    drifted = [f for f in result.findings if f.node == CAM and f.kind == DRIFT_FILE]
+    assert [(f.parameter, f.expected, f.actual) for f in drifted] == [("camera.fps", 15.0, 30.0)]
+    assert drifted[0].detail.startswith(f"differs from {deployment}:4:")
+    assert VIOLATION not in kinds(result, CAM)
+    assert kinds(result, ARM) == {}  # defaults, and what the file says
+
+
+def test_nodes_without_schema_are_listed(result: AuditResult) -> None:
+    assert result.plain == [PLAIN]
+    assert sorted(result.audited) == sorted([LOOSE, CAM, ARM])
+    assert kinds(result, PLAIN) == {NO_SCHEMA: {""}}
+
+
+def test_the_command_exits_1_with_a_json_report(running: None, deployment: Path) -> None:
+    command = [sys.executable, "-m", "genparams", "audit", "--format", "json", "--settle", "0.3"]
+    command += ["--params-file", str(deployment), *NODES]
+    done = subprocess.run(
+        command, cwd=ROOT, capture_output=True, text=True, timeout=60, env=dict(os.environ)
+    )
+    assert done.returncode == 1, done.stderr
+    report = json.loads(done.stdout)
+    assert report["ok"] is False
+    assert report["without_schema"] == [PLAIN]
+    violations = {(f["node"], f["parameter"]) for f in report["findings"] if f["kind"] == VIOLATION}
+    assert violations == {(LOOSE, "max_speed"), (LOOSE, "")}
+
+
+def test_a_clean_graph_exits_0(running: None) -> None:
+    command = [sys.executable, "-m", "genparams", "audit", "--settle", "0.3", ARM]
+    done = subprocess.run(command, cwd=ROOT, capture_output=True, text=True, timeout=60)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "audited 1 node(s) with a schema, 0 without; 0 violation(s)" in done.stdout
+
+
+def test_an_unreadable_params_file_is_bad_input(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("node: [unclosed\n", encoding="utf-8")
+    command = [sys.executable, "-m", "genparams", "audit", "--params-file", str(bad)]
+    done = subprocess.run(command, cwd=ROOT, capture_output=True, text=True, timeout=60)
+    assert done.returncode == 2
+    assert "bad.yaml:" in done.stderr

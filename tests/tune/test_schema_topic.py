@@ -1,0 +1,112 @@
+"""Self-describing nodes: the latched ~/genparams/schema message, merged per node."""
+
+from __future__ import annotations
+
+import json
+import time
+from pathlib import Path
+from typing import Any
+
+from rclpy.node import Node
+from std_msgs.msg import String
+
+from genparams import __version__
+from genparams.runtime.schema_topic import SCHEMA_TOPIC_SUFFIX
+from genparams.tune.graph import SCHEMA_QOS
+from tests.support import ROOT, RosHarness, load_generated
+
+
+def latest_schema(ros: RosHarness, node: Node) -> dict[str, Any]:
+    """Subscribe late, as a tool would: the transient-local message still arrives."""
+    received: list[str] = []
+    topic = node.get_fully_qualified_name() + SCHEMA_TOPIC_SUFFIX
+    subscription = ros.client_node.create_subscription(
+        String, topic, lambda m: received.append(m.data), SCHEMA_QOS
+    )
+    try:
+        deadline = time.monotonic() + 30.0  # by the clock: spin_once returns at any callback
+        while not received and time.monotonic() < deadline:
+            ros.executor.spin_once(timeout_sec=0.05)
+        assert received, f"no message on {topic}"
+        return dict(json.loads(received[-1]))
+    finally:
+        ros.client_node.destroy_subscription(subscription)
+
+
+def test_a_declared_class_describes_itself(ros: RosHarness, tmp_path: Path) -> None:
+    module = load_generated(ROOT / "examples/camera_node/camera_driver.yaml", tmp_path)
+    node = ros.node(args=["-p", "serial:=CAM12345"])
+    module.CameraDriverParams.declare(node)
+    message = latest_schema(ros, node)
+    assert message["genparams"] == __version__
+    assert message["node"] == node.get_fully_qualified_name()
+    (described,) = message["classes"]
+    by_name = {p["name"]: p for p in described["parameters"]}
+    fps = by_name["camera.fps"]
+    assert fps["unit"] == "Hz"
+    assert fps["range"] == {"min": 1.0, "max": 120.0, "step": 0.5}
+    assert fps["constraints"] == ["within [1.0, 120.0] in steps of 0.5"]
+    assert by_name["camera.encoding"]["choices"] == ["rgb8", "mono8", "bgr8"]
+    assert by_name["robot_name"]["read_only"] is True
+    assert by_name["serial"]["required"] is True
+    assert by_name["topics"]["validators"] == [
+        ["not_empty", None],
+        ["unique", None],
+        ["pattern", "^/"],
+    ]
+    assert len(described["hash"]) == 16
+
+
+def test_mapped_groups_rules_and_a_second_class_merge(ros: RosHarness, tmp_path: Path) -> None:
+    arm = load_generated(ROOT / "examples/arm/arm.yaml", tmp_path)
+    motion = load_generated(ROOT / "examples/motion/motion.yaml", tmp_path)
+    node = ros.node()
+    arm.ArmParams.declare(node, prefix="left")
+    first = latest_schema(ros, node)
+    motion.MotionParams.declare(node, prefix="base")
+    merged = latest_schema(ros, node)
+    assert [c["prefix"] for c in merged["classes"]] == ["base", "left"]
+    assert merged["hash"] != first["hash"]
+    left = next(c for c in merged["classes"] if c["prefix"] == "left")
+    assert left["maps"][0]["path"] == "left.gains"
+    assert left["maps"][0]["for_each"] == "left.joints"
+    assert [f["name"] for f in left["maps"][0]["fields"]] == ["i", "p"]
+    base = next(c for c in merged["classes"] if c["prefix"] == "base")
+    speed = next(r for r in base["rules"] if r["name"] == "speed_order")
+    assert speed["check"] == "min_speed <= max_speed"
+    assert speed["parameters"] == ["base.min_speed", "base.max_speed"]
+
+
+def test_the_topic_can_be_turned_off(ros: RosHarness, tmp_path: Path) -> None:
+    module = load_generated(ROOT / "examples/arm/arm.yaml", tmp_path)
+    node = ros.node()
+    module.ArmParams.declare(node, publish_schema=False)
+    topics = [name for name, _ in node.get_publisher_names_and_types_by_node(node.get_name(), "/")]
+    assert not any(name.endswith(SCHEMA_TOPIC_SUFFIX) for name in topics)
+
+
+def test_the_assembled_text_is_the_sorted_json_of_the_message(
+    ros: RosHarness, tmp_path: Path
+) -> None:
+    from genparams.runtime.schema_topic import SchemaPublisher
+
+    arm = load_generated(ROOT / "examples/arm/arm.yaml", tmp_path)
+    node = ros.node()
+    arm.ArmParams.declare(node)
+    arm.ArmParams.declare(node, prefix="right")
+    text = SchemaPublisher.of(node).message_text()
+    assert json.dumps(json.loads(text), sort_keys=True) == text
+
+
+def test_a_destroyed_node_is_not_kept_alive(ros: RosHarness, tmp_path: Path) -> None:
+    import gc
+    import weakref
+
+    arm = load_generated(ROOT / "examples/arm/arm.yaml", tmp_path)
+    node = ros.node()
+    arm.ArmParams.declare(node)
+    alive = weakref.ref(node)
+    del node
+    ros.destroy_test_nodes()
+    gc.collect()
+    assert alive() is None

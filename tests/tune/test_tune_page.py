@@ -1,0 +1,255 @@
+"""The tuning page in a real browser (Debian's Chromium) against real nodes in another process."""
+
+from __future__ import annotations
+
+import json
+import urllib.error
+import urllib.request
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+from playwright.sync_api import Browser, Page, expect, sync_playwright
+from rclpy.parameter import Parameter
+
+from genparams.cli import main as cli_main
+from genparams.tune.server import TuneServer
+from tests.support import ROOT, RosHarness, ServiceClient
+from tests.tune.support import (
+    CHROMIUM,
+    CHROMIUM_ARGS,
+    demo_nodes,
+    eventually,
+    service_client,
+    unique,
+)
+
+CAM, ARM, MOTION, PLAIN = (
+    f"/{unique(s)}" for s in ("tune_cam", "tune_arm", "tune_motion", "tune_plain")
+)
+
+
+@pytest.fixture(scope="module")
+def nodes() -> Iterator[None]:
+    specs = [f"{CAM[1:]}:camera", f"{ARM[1:]}:arm", f"{MOTION[1:]}:motion", f"{PLAIN[1:]}:plain"]
+    with demo_nodes(*specs):
+        yield
+
+
+@pytest.fixture(scope="module")
+def server(nodes: None) -> Iterator[TuneServer]:
+    tune = TuneServer(nodes=(CAM, ARM, MOTION, PLAIN))
+    tune.start()
+    try:
+        yield tune
+    finally:
+        tune.stop()
+
+
+@pytest.fixture(scope="module")
+def browser() -> Iterator[Browser]:
+    with sync_playwright() as playwright:
+        launched = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
+        yield launched
+        launched.close()
+
+
+@pytest.fixture
+def page(browser: Browser) -> Iterator[Page]:
+    opened = browser.new_page(viewport={"width": 1200, "height": 1000})
+    yield opened
+    opened.close()
+
+
+def open_node(page: Page, server: TuneServer, node: str) -> None:
+    page.goto(server.url)
+    link = page.locator(f'[data-node-link="{node}"] a')
+    expect(link).to_be_visible(timeout=10_000)
+    link.click()
+    expect(page.locator(f'form[data-node="{node}"]')).to_be_visible(timeout=10_000)
+
+
+def control(page: Page, node: str, name: str):  # type: ignore[no-untyped-def]
+    return page.locator(f'form[data-node="{node}"] [data-param="{name}"]')
+
+
+def error(page: Page, name: str):  # type: ignore[no-untyped-def]
+    return page.locator(f'[data-param-error="{name}"]')
+
+
+_CLIENTS: dict[str, ServiceClient] = {}
+
+
+def client(ros_harness: RosHarness, node: str) -> ServiceClient:
+    """One client per node for the module: each opens six service clients."""
+    if node not in _CLIENTS:
+        _CLIENTS[node] = service_client(ros_harness, node)
+    return _CLIENTS[node]
+
+
+def test_slider_sets_the_node_value(
+    page: Page, server: TuneServer, ros_harness: RosHarness
+) -> None:
+    open_node(page, server, CAM)
+    slider = control(page, CAM, "camera.fps")
+    expect(slider).to_have_attribute("step", "0.5")
+    slider.fill("60")
+    remote = client(ros_harness, CAM)
+    eventually(lambda: remote.get("camera.fps") == [60.0])
+    expect(page.locator('[data-diff="camera.fps"]')).to_be_visible()
+
+
+def test_out_of_range_is_stopped_in_the_page(
+    page: Page, server: TuneServer, ros_harness: RosHarness
+) -> None:
+    open_node(page, server, CAM)
+    box = page.locator('[data-param-box="camera.width"]')
+    box.fill("9000")
+    box.dispatch_event("change")
+    expect(error(page, "camera.width")).to_contain_text("not within [64, 4096]")
+    assert client(ros_harness, CAM).get("camera.width") == [640]
+
+
+def test_rule_breaking_value_shows_the_node_reason(
+    page: Page, server: TuneServer, ros_harness: RosHarness
+) -> None:
+    open_node(page, server, MOTION)
+    control(page, MOTION, "min_speed").fill("4")
+    expect(error(page, "min_speed")).to_contain_text("rule 'speed_order' broken")
+    assert client(ros_harness, MOTION).get("min_speed") == [0.1]
+
+
+def test_a_set_made_elsewhere_shows_up(
+    page: Page, server: TuneServer, ros_harness: RosHarness
+) -> None:
+    open_node(page, server, CAM)
+    result = client(ros_harness, CAM).set(Parameter("camera.width", value=800))
+    assert result[0].successful
+    expect(control(page, CAM, "camera.width")).to_have_value("800", timeout=1_000)
+    open_node(page, server, PLAIN)
+    client(ros_harness, PLAIN).set(Parameter("frame", value="odom"))
+    expect(control(page, PLAIN, "frame")).to_have_value("odom", timeout=1_000)
+
+
+def test_read_only_parameters_are_disabled(page: Page, server: TuneServer) -> None:
+    open_node(page, server, CAM)
+    expect(control(page, CAM, "robot_name")).to_be_disabled()
+    expect(control(page, CAM, "camera.encoding")).to_be_enabled()
+    expect(page.locator('[data-row="serial"] .required')).to_be_visible()
+    open_node(page, server, PLAIN)
+    expect(control(page, PLAIN, "hardware_id")).to_be_disabled()
+    expect(control(page, PLAIN, "gain")).to_have_attribute("step", "0.5")
+
+
+def test_a_choice_offers_exactly_its_choices(page: Page, server: TuneServer) -> None:
+    open_node(page, server, CAM)
+    options = control(page, CAM, "camera.encoding").locator("option")
+    assert options.all_text_contents() == ["rgb8", "mono8", "bgr8"]
+
+
+def test_plain_node_slider_sets_the_value(
+    page: Page, server: TuneServer, ros_harness: RosHarness
+) -> None:
+    open_node(page, server, PLAIN)
+    control(page, PLAIN, "gain").fill("7.5")
+    eventually(lambda: client(ros_harness, PLAIN).get("gain") == [7.5])
+
+
+def test_add_and_remove_a_map_key(page: Page, server: TuneServer, ros_harness: RosHarness) -> None:
+    open_node(page, server, ARM)
+    page.locator('[data-map-add="gains"]').fill("wrist")
+    page.locator('[data-map-add-button="gains"]').click()
+    expect(control(page, ARM, "gains.wrist.p")).to_be_visible()
+    remote = client(ros_harness, ARM)
+    assert remote.get("joints", "gains.wrist.p") == [["shoulder", "elbow", "wrist"], 1.0]
+    page.locator('[data-map-remove="gains.elbow"]').click()
+    expect(control(page, ARM, "gains.elbow.p")).to_have_count(0)
+    eventually(lambda: remote.get("joints") == [["shoulder", "wrist"]])
+
+
+def test_two_edits_apply_atomically_and_one_bad_value_changes_nothing(
+    page: Page, server: TuneServer, ros_harness: RosHarness
+) -> None:
+    open_node(page, server, MOTION)
+    page.locator("#live").uncheck()
+    control(page, MOTION, "max_speed").fill("2")
+    control(page, MOTION, "min_speed").fill("3")
+    apply = page.locator("[data-apply]")
+    expect(apply).to_contain_text("Apply 2 change(s)")
+    apply.click()
+    expect(error(page, "min_speed")).to_contain_text("rule 'speed_order' broken")
+    remote = client(ros_harness, MOTION)
+    assert remote.get("max_speed", "min_speed") == [1.0, 0.1]
+    control(page, MOTION, "min_speed").fill("1.5")
+    apply.click()
+    eventually(lambda: remote.get("max_speed", "min_speed") == [2.0, 1.5])
+
+
+def test_downloaded_params_file_passes_check_params(
+    page: Page, server: TuneServer, tmp_path: Path
+) -> None:
+    open_node(page, server, CAM)
+    with page.expect_download() as download:
+        page.locator("[data-download]").click()
+    saved = tmp_path / "cam.yaml"
+    download.value.save_as(saved)
+    schema = ROOT / "examples/camera_node/camera_driver.yaml"
+    assert "serial: CAM12345" in saved.read_text()
+    assert cli_main(["check-params", str(schema), str(saved), "--node", CAM]) == 0
+
+
+def test_screenshot_for_the_docs(page: Page, server: TuneServer) -> None:
+    page.set_viewport_size({"width": 1100, "height": 900})
+    open_node(page, server, CAM)
+    expect(page.locator("body[data-ready]")).to_be_attached()
+    target = ROOT / "docs/images/tune.png"
+    target.parent.mkdir(exist_ok=True)
+    page.screenshot(path=str(target), full_page=True)
+    assert target.stat().st_size > 10_000
+
+
+def post(url: str, body: dict[str, object], token: str | None = None) -> int:
+    request = urllib.request.Request(
+        url, data=json.dumps(body).encode(), headers={"content-type": "application/json"}
+    )
+    if token is not None:
+        request.add_header("x-genparams-token", token)
+    try:
+        with urllib.request.urlopen(request, timeout=10) as response:
+            return int(response.status)
+    except urllib.error.HTTPError as exc:
+        return exc.code
+
+
+def test_read_only_page_and_token(page: Page, server: TuneServer) -> None:
+    viewer = TuneServer(read_only=True, graph=server.graph, nodes=(CAM,))
+    guarded = TuneServer(token="s3cret", graph=server.graph)
+    try:
+        viewer.start()
+        open_node(page, viewer, CAM)
+        expect(control(page, CAM, "camera.encoding")).to_be_disabled()
+        expect(page.locator("#mode")).to_be_visible()
+        body = {"node": CAM, "params": [{"name": "camera.fps", "type": "double", "value": 5}]}
+        assert post(viewer.url + "api/set", body) == 403
+        guarded.start()
+        assert guarded.url.endswith("/?token=s3cret")
+        base = guarded.url.split("?")[0]
+        assert post(base + "api/set", body) == 403
+        assert post(base + "api/set", body, token="wrong") == 403
+        assert post(base + "api/set", body, token="s3cret") == 200
+    finally:
+        viewer.stop()
+        guarded.stop()
+    assert TuneServer("0.0.0.0", graph=server.graph).token  # any host but loopback: a token
+
+
+def test_reset_to_default_and_the_diff(
+    page: Page, server: TuneServer, ros_harness: RosHarness
+) -> None:
+    open_node(page, server, CAM)
+    remote = client(ros_harness, CAM)
+    assert remote.set(Parameter("control.pid.kp", value=2.5))[0].successful
+    expect(page.locator('[data-diff="control.pid.kp"]')).to_contain_text("2.5")
+    page.locator('[data-reset="control.pid.kp"]').click()
+    eventually(lambda: remote.get("control.pid.kp") == [1.0])
+    expect(page.locator('[data-diff="control.pid.kp"]')).to_have_count(0)
