@@ -9,7 +9,8 @@ from typing import TYPE_CHECKING, Any
 from genparams.runtime.naming import ENTRY_KEY, ENTRY_KEY_RULE, attribute_name, entry_key_problem
 from genparams.runtime.rules import CompiledRule, RuleError, compile_rule, rules_by_parameter
 from genparams.runtime.types import TYPES, ParamType
-from genparams.runtime.validators import OneOf, RosRange, SubsetOf, Validator, build_validator
+from genparams.runtime.validator_kinds import build_validator
+from genparams.runtime.validators import OneOf, RosRange, SubsetOf, Validator
 
 if TYPE_CHECKING:
     from genparams.runtime.tree import Group

@@ -7,28 +7,20 @@ parameter type. Every problem is collected; none stops the walk.
 
 from __future__ import annotations
 
-import math
 import os
 from collections.abc import Collection, Iterable, Iterator
 from typing import Any
 
 from genparams.runtime import naming
-from genparams.runtime.types import INT64_MAX, INT64_MIN, TYPES, ParamType, ValueTypeError
-from genparams.runtime.validators import (
-    KINDS,
-    OneOf,
-    RosRange,
-    SubsetOf,
-    Validator,
-    ValidatorArgumentError,
-    build_validator,
-)
+from genparams.runtime.types import TYPES, ValueTypeError
+from genparams.runtime.validator_kinds import build_validator
+from genparams.runtime.validators import OneOf, SubsetOf, Validator
 from genparams.schema.errors import SchemaError, SchemaProblem
+from genparams.schema.leaf_checks import LeafChecks
 from genparams.schema.loader import LoadedDocument, Path, dotted
-from genparams.schema.model import Group, Parameter, RangeSpec, Schema, ValidatorSpec
+from genparams.schema.model import Group, Parameter, Schema
 from genparams.schema.references import check_aliases, check_maps
 from genparams.schema.rule_builder import build_rules
-from genparams.schema.schema_check import did_you_mean
 
 FOR_EACH = "for_each"
 
@@ -59,15 +51,6 @@ def model_problems(document: LoadedDocument, known: Iterable[SchemaProblem]) -> 
     return builder.problems
 
 
-def _frozen(value: Any) -> Any:
-    """Lists become tuples, so the model is hashable and immutable."""
-    if isinstance(value, list):
-        return tuple(_frozen(v) for v in value)
-    if isinstance(value, dict):
-        return {k: _frozen(v) for k, v in value.items()}
-    return value
-
-
 class _ModelBuilder:
     def __init__(self, document: LoadedDocument, skip: Collection[str] = ()) -> None:
         self.document = document
@@ -80,6 +63,7 @@ class _ModelBuilder:
         self.mapped: list[tuple[Group, Path]] = []
         self.aliases: list[tuple[str, Path, Parameter]] = []  # (alias, where, its parameter)
         self.unbuilt: list[tuple[str, ...]] = []  # paths of names left out for known problems
+        self.leaf_checks = LeafChecks(self.problem)
 
     def problem(self, path: Path, message: str, *, at_key: bool = False) -> None:
         where = self.document.key_location(path) if at_key else self.document.value_location(path)
@@ -237,13 +221,13 @@ class _ModelBuilder:
                 self.problem((*doc_path, "default"), f"default does not match type: {exc}")
                 default_ok = False
 
-        value_range = self.range(leaf, doc_path, param_type)
-        choices = self.choices(leaf, doc_path, param_type)
-        validators = self.validators(leaf, doc_path, param_type)
+        value_range = self.leaf_checks.range(leaf, doc_path, param_type)
+        choices = self.leaf_checks.choices(leaf, doc_path, param_type)
+        validators = self.leaf_checks.validators(leaf, doc_path, param_type)
 
         checks: list[tuple[str, Validator]] = []
         if value_range is not None:
-            checks.append(("range", self.range_validator(value_range, param_type)))
+            checks.append(("range", self.leaf_checks.range_validator(value_range, param_type)))
         if choices is not None:
             checks.append(("choices", SubsetOf(choices) if param_type.is_array else OneOf(choices)))
         checks.extend(
@@ -256,7 +240,7 @@ class _ModelBuilder:
                 reason = check(default)
                 if reason is not None:
                     self.problem((*doc_path, "default"), f"default violates {key}: {reason}")
-        self.check_satisfiable(doc_path, param_type, checks)
+        self.leaf_checks.check_satisfiable(doc_path, param_type, checks)
         parameter = Parameter(
             ros_name=".".join(path),
             path=path,
@@ -280,192 +264,9 @@ class _ModelBuilder:
             self.aliases.append((alias, (*doc_path, "aliases", index), parameter))
         return parameter
 
-    @staticmethod
-    def range_validator(value_range: RangeSpec, param_type: ParamType) -> RosRange:
-        return RosRange(
-            value_range.min,
-            value_range.max,
-            value_range.step,
-            integer=param_type.scalar_kind == "int",
-            each=param_type.is_array,
-        )
-
-    def range(
-        self, leaf: dict[str, Any], doc_path: Path, param_type: ParamType
-    ) -> RangeSpec | None:
-        if "range" not in leaf:
-            return None
-        range_path = (*doc_path, "range")
-        if not param_type.is_numeric:
-            self.problem(
-                range_path,
-                f"range applies to int, double, int_array and double_array, not {param_type.name}",
-                at_key=True,
-            )
-            return None
-        raw = leaf["range"]
-        values: dict[str, int | float] = {}
-        ok = True
-        for key in ("min", "max", "step"):
-            value = raw.get(key, 0)
-            if param_type.scalar_kind == "int":
-                if isinstance(value, float) and not value.is_integer():
-                    self.problem(
-                        (*range_path, key), f"{key} must be an integer for {param_type.name}"
-                    )
-                    ok = False
-                    continue
-                value = int(value)
-                if not INT64_MIN <= value <= INT64_MAX:
-                    self.problem((*range_path, key), f"{key} {value} does not fit in int64")
-                    ok = False
-                    continue
-            else:
-                try:
-                    value = float(value)
-                except OverflowError:
-                    self.problem((*range_path, key), f"{key} is too large for a double")
-                    ok = False
-                    continue
-                if math.isnan(value) or (key == "step" and math.isinf(value)):
-                    self.problem((*range_path, key), f"{key} must be a finite number")
-                    ok = False
-                    continue
-            values[key] = value
-        if not ok:
-            return None
-        if values["min"] > values["max"]:
-            self.problem(
-                (*range_path, "min"),
-                f"min {values['min']!r} is greater than max {values['max']!r}",
-            )
-            return None
-        step = values["step"]
-        if step and not math.isfinite((values["max"] - values["min"]) / step):
-            # ROS computes (value - min) / step, which must stay a finite double.
-            self.problem(
-                (*range_path, "step"),
-                f"step {step!r} needs finite min and max and (max - min) / step below 1e308",
-            )
-            return None
-        return RangeSpec(values["min"], values["max"], step)
-
-    def choices(
-        self, leaf: dict[str, Any], doc_path: Path, param_type: ParamType
-    ) -> tuple[Any, ...] | None:
-        if "choices" not in leaf:
-            return None
-        path = (*doc_path, "choices")
-        if (
-            param_type.scalar_kind not in ("int", "double", "string")
-            or param_type.name == "byte_array"
-        ):
-            self.problem(path, f"choices do not apply to {param_type.name}", at_key=True)
-            return None
-        element = TYPES[param_type.scalar_kind]
-        out = []
-        for index, choice in enumerate(leaf["choices"]):
-            try:
-                out.append(element.coerce_default(choice))
-            except ValueTypeError as exc:
-                self.problem((*path, index), f"choice does not match type: {exc}")
-        if len(set(out)) != len(out):
-            self.problem(path, "choices repeat a value")
-        return tuple(out)
-
-    def validators(
-        self, leaf: dict[str, Any], doc_path: Path, param_type: ParamType
-    ) -> tuple[ValidatorSpec, ...]:
-        specs = []
-        for index, entry in enumerate(leaf.get("validators", [])):
-            path = (*doc_path, "validators", index)
-            if isinstance(entry, str):
-                rule, argument, bare = entry, None, True
-            else:
-                ((rule, argument),) = entry.items()
-                bare = False
-            kind = KINDS.get(rule)
-            if kind is None:
-                self.problem(path, f"unknown validator {rule!r}{did_you_mean(rule, KINDS)}")
-                continue
-            if param_type.name not in kind.applies_to:
-                applies = ", ".join(sorted(kind.applies_to))
-                self.problem(
-                    path, f"validator {rule!r} does not apply to {param_type.name} (only {applies})"
-                )
-                continue
-            if kind.takes_argument and bare:
-                self.problem(path, f"validator {rule!r} needs an argument: {{{rule}: ...}}")
-                continue
-            if not kind.takes_argument and not bare and argument not in (None, True):
-                self.problem(path, f"validator {rule!r} takes no argument: write just {rule}")
-                continue
-            argument = _frozen(argument) if kind.takes_argument else None
-            if rule in ("one_of", "subset_of") and isinstance(argument, tuple):
-                argument = self.typed_choices(path, argument, param_type)
-            try:
-                validator = build_validator(rule, argument, param_type.name)
-            except ValidatorArgumentError as exc:
-                self.problem(path, str(exc))
-                continue
-            specs.append(ValidatorSpec(rule, argument, validator.describe()))
-        return tuple(specs)
-
-    def typed_choices(
-        self, path: Path, argument: tuple[Any, ...], param_type: ParamType
-    ) -> tuple[Any, ...]:
-        element = TYPES[param_type.scalar_kind]
-        out = []
-        for index, choice in enumerate(argument):
-            try:
-                out.append(element.coerce_default(choice))
-            except ValueTypeError as exc:
-                self.problem((*path, index), f"choice does not match type: {exc}")
-        return tuple(out)
-
-    def check_satisfiable(
-        self, doc_path: Path, param_type: ParamType, checks: list[tuple[str, Validator]]
-    ) -> None:
-        """Numeric limits that leave no valid value are a schema error, not a runtime surprise."""
-        if param_type.is_array or not param_type.is_numeric:
-            return
-        low: float = INT64_MIN if param_type.scalar_kind == "int" else -math.inf
-        high: float = INT64_MAX if param_type.scalar_kind == "int" else math.inf
-        low_open = high_open = False
-        for _key, check in checks:
-            bounds = _limits(check)
-            if bounds is None:
-                continue
-            lo, lo_open, hi, hi_open = bounds
-            if lo > low or (lo == low and lo_open):
-                low, low_open = lo, lo_open
-            if hi < high or (hi == high and hi_open):
-                high, high_open = hi, hi_open
-        if low > high or (low == high and (low_open or high_open)):
-            self.problem(
-                doc_path,
-                "range and validators contradict each other: no value satisfies all of them",
-                at_key=True,
-            )
-
 
 def _keys(tree: Any) -> Iterator[str]:
     if isinstance(tree, dict):
         for key, value in tree.items():
             yield str(key)
             yield from _keys(value)
-
-
-def _limits(check: Validator) -> tuple[float, bool, float, bool] | None:
-    from genparams.runtime.validators import Bounds, Compare
-
-    if isinstance(check, RosRange) or (isinstance(check, Bounds) and not check.each):
-        return (check.low, False, check.high, False)
-    if isinstance(check, Compare):
-        return {
-            "gt": (check.limit, True, math.inf, False),
-            "ge": (check.limit, False, math.inf, False),
-            "lt": (-math.inf, False, check.limit, True),
-            "le": (-math.inf, False, check.limit, False),
-        }[check.rule]
-    return None
