@@ -13,11 +13,12 @@ from genparams.commands import (
     defaults,
     docs,
     generate,
+    import_gpl,
     json_schema,
     validate,
 )
 
-COMMANDS = (generate, validate, docs, defaults, json_schema, check_params, cmake_dir)
+COMMANDS = (generate, validate, docs, defaults, json_schema, check_params, import_gpl, cmake_dir)
 
 
 def build_parser() -> argparse.ArgumentParser:

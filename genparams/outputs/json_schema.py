@@ -33,13 +33,13 @@ from genparams.runtime.validators import (
     Unique,
     Validator,
 )
-from genparams.schema.model import Group, Parameter, Schema
+from genparams.schema.model import Group, OpenNamespace, Parameter, Schema
 from genparams.schema.specs import compiled_param, compiled_params
 
 DRAFT = "https://json-schema.org/draft/2020-12/schema"
 _TOKEN = "(\\*\\*|\\*|[A-Za-z_][A-Za-z0-9_]*)"
 NODE_KEY_PATTERN = f"^/?{_TOKEN}(/{_TOKEN})*$"
-ENTRY_KEY_PATTERN = "^[A-Za-z0-9_-]+$"  # the key of a mapped entry: naming.ENTRY_KEY_TEXT
+ENTRY_KEY_PATTERN = "^[^.*\\s\\u0000-\\u001f\\u007f]+$"  # an entry's key: naming.ENTRY_KEY_TEXT
 # Parameters every rclpy node declares itself; a params file may set them for any node.
 BUILTIN_PARAMETERS: dict[str, dict[str, Any]] = {
     "use_sim_time": {"type": "boolean", "description": "Use /clock for time (every ROS node)."},
@@ -135,6 +135,13 @@ def _descendants(group: Group) -> Iterator[tuple[tuple[str, ...], Group | Parame
             yield (*entry, *path), item
 
 
+def _open_descendants(group: Group) -> Iterator[tuple[tuple[str, ...], OpenNamespace]]:
+    """Every open namespace below ``group``, with its path relative to ``group``."""
+    depth = len(group.path) + (1 if group.mapped_over else 0)
+    for namespace in group.walk_open_namespaces():
+        yield namespace.path[depth:], namespace
+
+
 def _dotted_pattern(path: tuple[str, ...]) -> str:
     """A regex for the dotted key of ``path``, with any entry key where ``*`` stands."""
     token = ENTRY_KEY_PATTERN[1:-1]
@@ -165,6 +172,12 @@ def _group_schema(group: Group, old_names: _OldNames, *, required: bool) -> dict
             # own schema then requires the rest.
             prefixes = [".".join(path[:n]) for n in range(1, len(path) + 1)]
             required_below.append({"anyOf": [{"required": [prefix]} for prefix in prefixes]})
+    for path, namespace in _open_descendants(group):
+        # Other code declares what lies here: any value, nested or dotted.
+        if ENTRY_KEY not in path:
+            properties[".".join(path)] = {"description": namespace.description or "Open namespace."}
+        patterns[_dotted_pattern(path)] = {"description": namespace.description}
+        patterns[_dotted_pattern(path)[:-1] + "\\."] = {}
     properties.update(old_names.properties(group))
     result: dict[str, Any] = {
         "type": "object",

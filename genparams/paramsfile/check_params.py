@@ -146,7 +146,7 @@ class _Checker:
             self.old_names[entry.name] = entry
             param = self.params[current]
         if param is None:
-            if not self.unmapped(entry):
+            if not self.in_open_namespace(entry) and not self.unmapped(entry):
                 self.unknown(entry)
             return
         if entry.name in self.deprecated:
@@ -171,6 +171,15 @@ class _Checker:
         reason = param.check(value)
         if reason is not None:
             self.problems.append(SchemaProblem(entry.value_location, entry.name, reason))
+
+    def in_open_namespace(self, entry: ParamEntry) -> bool:
+        """Under a namespace other code declares: not the schema's to check."""
+        parts = entry.name.split(".")
+        return any(
+            len(parts) > len(ns.path)
+            and all(t in (p, ENTRY_KEY) for p, t in zip(parts, ns.path, strict=False))
+            for ns in self.schema.open_namespaces
+        )
 
     def unmapped(self, entry: ParamEntry) -> bool:
         """An entry of a mapped group for a key the key list does not hold; False if none."""

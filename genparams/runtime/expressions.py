@@ -26,7 +26,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from genparams.runtime.naming import attribute_name
+from genparams.runtime.naming import attribute_parts
 
 MAX_CHECK_LENGTH = 2000
 
@@ -162,8 +162,7 @@ class _Compiler:
         self.shift = shift
         # Expression spelling (attribute names joined by dots) -> ROS name.
         self.spellings = {
-            ".".join(attribute_name(part) for part in ros_name.split(".")): ros_name
-            for ros_name in parameter_types
+            ".".join(attribute_parts(ros_name)): ros_name for ros_name in parameter_types
         }
         self.kinds = {name: KIND_OF_TYPE[t] for name, t in parameter_types.items()}
         self.used: dict[str, None] = {}  # ordered set

@@ -105,9 +105,18 @@ _CUSTOM_TARGET = re.compile(r"[A-Za-z_][\w]*(\.[A-Za-z_][\w]*)*:[A-Za-z_]\w*")
 
 
 def _custom(arg: Any, _type: str) -> Custom:
-    if not isinstance(arg, str) or not _CUSTOM_TARGET.fullmatch(arg):
-        raise ValidatorArgumentError(f"custom takes 'package.module:function', got {fmt(arg)}")
-    return Custom(arg)
+    """``'pkg.mod:function'``, or ``{function: 'pkg.mod:function', args: [...]}``."""
+    target, args = arg, ()
+    if isinstance(arg, dict) and set(arg) <= {"function", "args"} and "function" in arg:
+        target, args = arg["function"], arg.get("args", ())
+        if not isinstance(args, (list, tuple)):
+            raise ValidatorArgumentError(f"custom args must be a list, got {fmt(args)}")
+    if not isinstance(target, str) or not _CUSTOM_TARGET.fullmatch(target):
+        raise ValidatorArgumentError(
+            "custom takes 'package.module:function' or "
+            f"{{function: 'package.module:function', args: [...]}}, got {fmt(arg)}"
+        )
+    return Custom(target, tuple(args))
 
 
 def _compare(rule: str) -> Callable[[Any, str], Validator]:

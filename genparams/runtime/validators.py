@@ -275,12 +275,17 @@ class Pattern:
 
 @dataclass(frozen=True)
 class Custom:
-    """A user function ``module:function`` taking the value, returning None or a reason."""
+    """A user function ``module:function`` taking the value then ``args``: None or a reason.
+
+    ``args`` are fixed arguments from the schema, so one function serves several
+    limits (``{custom: {function: 'pkg.checks:at_least_or_nan', args: [0.0]}}``).
+    """
 
     target: str
+    args: tuple[Any, ...] = ()
     rule: str = "custom"
 
-    def resolve(self) -> Callable[[Any], Any]:
+    def resolve(self) -> Callable[..., Any]:
         module_name, _, function_name = self.target.partition(":")
         module = importlib.import_module(module_name)
         function = getattr(module, function_name)
@@ -288,19 +293,26 @@ class Custom:
             raise TypeError(f"{self.target} is not callable")
         return function  # type: ignore[no-any-return]
 
+    @property
+    def call_text(self) -> str:
+        """How the check reads in messages: ``pkg.checks:f`` or ``pkg.checks:f(0.0)``."""
+        if not self.args:
+            return self.target
+        return f"{self.target}({', '.join(fmt(a) for a in self.args)})"
+
     def __call__(self, value: Any) -> str | None:
         try:
-            outcome = self.resolve()(value)
+            outcome = self.resolve()(value, *self.args)
         except Exception as exc:  # a failing check must reject, never crash the service
-            return f"custom validator {self.target} raised {type(exc).__name__}: {exc}"
+            return f"custom validator {self.call_text} raised {type(exc).__name__}: {exc}"
         if outcome is None or outcome is True:
             return None
         if outcome is False:
-            return f"rejected by custom validator {self.target}"
-        return f"{outcome} ({self.target})"
+            return f"rejected by custom validator {self.call_text}"
+        return f"{outcome} ({self.call_text})"
 
     def describe(self) -> str:
-        return f"passes {self.target}"
+        return f"passes {self.call_text}"
 
 
 def first_failure(validators: Sequence[Validator], value: Any) -> str | None:

@@ -18,7 +18,7 @@ from genparams.runtime.validators import OneOf, SubsetOf, Validator
 from genparams.schema.errors import SchemaError, SchemaProblem
 from genparams.schema.leaf_checks import LeafChecks
 from genparams.schema.loader import LoadedDocument, Path, dotted
-from genparams.schema.model import Group, Parameter, Schema
+from genparams.schema.model import Group, OpenNamespace, Parameter, Schema
 from genparams.schema.references import check_aliases, check_maps
 from genparams.schema.rule_builder import build_rules
 
@@ -96,12 +96,15 @@ class _ModelBuilder:
         path: tuple[str, ...],
         attribute: str,
         class_name: str,
+        *,
+        in_place: bool = False,
     ) -> Group:
         parameters: list[Parameter] = []
         groups: list[Group] = []
+        open_namespaces: list[OpenNamespace] = []
         attributes: dict[str, str] = {}
         mapped_over = mapping.get(FOR_EACH, "")
-        if mapped_over and not path:
+        if mapped_over and not path and not in_place:
             self.problem(
                 (*doc_path, FOR_EACH),
                 "the top level cannot be mapped: put for_each in a namespace",
@@ -114,14 +117,28 @@ class _ModelBuilder:
             if key == FOR_EACH:
                 continue
             key_path = (*doc_path, key)
-            if not self.check_name(key, key_path, attributes, top_level=not path):
+            if key == naming.ENTRY_KEY:
+                entries = self.entries_in_place(value, key_path, member_path)
+                if entries is not None:
+                    groups.append(entries)
+                continue
+            if not self.check_name(key, value, key_path, attributes, top_level=not member_path):
                 continue
             child_path = (*member_path, key)
             if self.skipped(key_path, whole_tree=isinstance(value, dict) and "type" in value):
                 self.unbuilt.append(child_path)
                 continue
-            child_attribute = naming.attribute_name(key)
-            if isinstance(value, dict) and "type" in value:
+            child_attribute = naming.attribute_name(key, top_level=not member_path)
+            if is_open_namespace(value):
+                open_namespaces.append(
+                    OpenNamespace(
+                        ros_name=".".join(child_path),
+                        path=child_path,
+                        description=value.get("description", ""),
+                        location=self.document.key_location(key_path),
+                    )
+                )
+            elif isinstance(value, dict) and "type" in value:
                 parameters.append(self.parameter(value, key_path, child_path, child_attribute))
             elif isinstance(value, dict):
                 child_class = self.group_class_name(child_path)
@@ -137,17 +154,37 @@ class _ModelBuilder:
             parameters=tuple(parameters),
             groups=tuple(groups),
             mapped_over=mapped_over,
+            open_namespaces=tuple(open_namespaces),
+            in_place=in_place,
         )
         if mapped_over:
             self.mapped.append((group, doc_path))
         return group
+
+    def entries_in_place(self, value: Any, key_path: Path, path: tuple[str, ...]) -> Group | None:
+        """A ``"*"`` key: a mapped group whose entries sit in this namespace, by key."""
+        if not (isinstance(value, dict) and FOR_EACH in value):
+            self.problem(
+                key_path,
+                '"*" stands for the entries of a map: give it for_each, the string_array '
+                "parameter whose items key them",
+                at_key=True,
+            )
+            return None
+        if self.skipped(key_path, whole_tree=False):
+            self.unbuilt.append((*path, naming.ENTRY_KEY))
+            return None
+        words = "".join(naming.pascal_case(p) for p in path if p != naming.ENTRY_KEY)
+        depth = path.count(naming.ENTRY_KEY) + 1  # "Entry" once per map level
+        entry_class = self.unique_class_name(f"{words}{'Entry' * depth}Group")
+        return self.group(value, key_path, path, "", entry_class, in_place=True)
 
     def is_unbuilt(self, name: str) -> bool:
         """Whether ``name`` (a ROS name or its attribute spelling) lies in a part of the
         schema left out for a problem of its own: a reference to it is no new problem."""
         parts = tuple(name.split("."))
         for path in self.unbuilt:
-            spelled = tuple(map(naming.attribute_name, path))
+            spelled = naming.attribute_parts(".".join(path))
             if parts[: len(path)] in (path, spelled):
                 return True
         return False
@@ -161,7 +198,9 @@ class _ModelBuilder:
 
     def group_class_name(self, path: tuple[str, ...]) -> str:
         words = (naming.pascal_case(part) for part in path if part != naming.ENTRY_KEY)
-        base = "".join(words) + "Group"
+        return self.unique_class_name("".join(words) + "Group")
+
+    def unique_class_name(self, base: str) -> str:
         candidate, number = base, 2
         while candidate in self.class_names:
             candidate, number = f"{base}{number}", number + 1
@@ -169,7 +208,7 @@ class _ModelBuilder:
         return candidate
 
     def check_name(
-        self, key: str, key_path: Path, seen: dict[str, str], *, top_level: bool
+        self, key: str, value: Any, key_path: Path, seen: dict[str, str], *, top_level: bool
     ) -> bool:
         if not naming.is_ros_token(key):
             self.problem(
@@ -179,23 +218,15 @@ class _ModelBuilder:
                 at_key=True,
             )
             return False
-        if top_level and key in naming.RESERVED_TOP_LEVEL:
+        if top_level and key in naming.NODE_PARAMETERS and not _adopts(value):
             self.problem(
                 key_path,
-                f"name {key!r} is reserved by the generated class's API; "
-                "rename it or move it into a namespace",
+                f"every node declares {key!r} already: leave it out, or give it adopt: true "
+                "to take over checking it",
                 at_key=True,
             )
             return False
-        if key in naming.SHADOWING:
-            self.problem(
-                key_path,
-                f"name {key!r} would hide the Python name {key} that the generated classes "
-                "use; rename it",
-                at_key=True,
-            )
-            return False
-        attribute = naming.attribute_name(key)
+        attribute = naming.attribute_name(key, top_level=top_level)
         if attribute in seen:
             self.problem(
                 key_path,
@@ -258,11 +289,28 @@ class _ModelBuilder:
             deprecated=leaf.get("deprecated", ""),
             aliases=tuple(leaf.get("aliases", ())),
             location=self.document.key_location(doc_path),
+            adopt=leaf.get("adopt", False),
         )
+        if parameter.adopt and naming.ENTRY_KEY in path:
+            self.problem(
+                (*doc_path, "adopt"),
+                "adopt is not supported inside a mapped group: entries come and go with "
+                "their keys, which other code does not follow",
+                at_key=True,
+            )
         self.leaf_paths[parameter.ros_name] = doc_path
         for index, alias in enumerate(parameter.aliases):
             self.aliases.append((alias, (*doc_path, "aliases", index), parameter))
         return parameter
+
+
+def _adopts(value: Any) -> bool:
+    return isinstance(value, dict) and value.get("adopt") is True
+
+
+def is_open_namespace(value: Any) -> bool:
+    """``{open: true}``: a namespace other code fills (``open`` with a mapping is a name)."""
+    return isinstance(value, dict) and value.get("open") is True and "type" not in value
 
 
 def _keys(tree: Any) -> Iterator[str]:
