@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Collection, Iterator
 from typing import Any
 
 from genparams.outputs.params_file import parameter_comment
@@ -66,7 +66,7 @@ def params_file_schema(schema: Schema, *, partial: bool = False) -> dict[str, An
     old_names = _OldNames(schema)
     for group in _all_groups(schema.root):
         definitions[_group_name(group)] = _group_schema(group, old_names, required=not partial)
-        if group.mapped_over:
+        if group.mapped_over and not group.in_place:
             definitions[_map_name(group)] = _map_schema(group)
     compiled = compiled_params(schema)
     for parameter in schema.parameters:
@@ -91,6 +91,8 @@ def _all_groups(group: Group) -> Iterator[Group]:
 
 
 def _group_name(group: Group) -> str:
+    if group.in_place:  # shares its ros_name with the namespace it sits in
+        return f"group.{group.spec_path}"
     return f"group.{group.ros_name}" if group.ros_name else "group"
 
 
@@ -127,10 +129,14 @@ def _descendants(group: Group) -> Iterator[tuple[tuple[str, ...], Group | Parame
     for parameter in group.parameters:
         yield (parameter.path[-1],), parameter
     for child in group.groups:
-        yield (child.path[-1],), child
-        entry = (child.path[-1], ENTRY_KEY) if child.mapped_over else (child.path[-1],)
-        if child.mapped_over:
+        if child.in_place:  # its entries sit right here, by key
+            entry: tuple[str, ...] = (ENTRY_KEY,)
             yield entry, child
+        else:
+            yield (child.path[-1],), child
+            entry = (child.path[-1], ENTRY_KEY) if child.mapped_over else (child.path[-1],)
+            if child.mapped_over:
+                yield entry, child
         for path, item in _descendants(child):
             yield (*entry, *path), item
 
@@ -142,10 +148,26 @@ def _open_descendants(group: Group) -> Iterator[tuple[tuple[str, ...], OpenNames
         yield namespace.path[depth:], namespace
 
 
-def _dotted_pattern(path: tuple[str, ...]) -> str:
-    """A regex for the dotted key of ``path``, with any entry key where ``*`` stands."""
+def _dotted_pattern(path: tuple[str, ...], beside: Collection[str] = ()) -> str:
+    """A regex for the dotted key of ``path``, with any entry key where ``*`` stands.
+
+    ``beside``: the fixed names of the namespace where a leading ``*`` (in-place
+    entries) stands; no entry key may be one of them, so no key matches both.
+    """
     token = ENTRY_KEY_PATTERN[1:-1]
-    return "^" + "\\.".join(token if p == ENTRY_KEY else re.escape(p) for p in path) + "$"
+    parts = [token if p == ENTRY_KEY else re.escape(p) for p in path]
+    if beside and path[:1] == (ENTRY_KEY,):
+        names = "|".join(re.escape(name) for name in sorted(beside))
+        parts[0] = f"(?!(?:{names})(?:\\.|$)){token}"
+    return "^" + "\\.".join(parts) + "$"
+
+
+def _fixed_names(group: Group) -> set[str]:
+    """The names written directly in ``group`` (not its in-place entries' keys)."""
+    names = {p.path[-1] for p in group.parameters}
+    names.update(g.path[-1] for g in group.groups if not g.in_place)
+    names.update(n.path[-1] for n in group.open_namespaces)
+    return names
 
 
 def _group_schema(group: Group, old_names: _OldNames, *, required: bool) -> dict[str, Any]:
@@ -156,11 +178,14 @@ def _group_schema(group: Group, old_names: _OldNames, *, required: bool) -> dict
         patterns["^qos_overrides\\."] = {}
     required_here: list[str] = []
     required_below: list[dict[str, Any]] = []
+    beside = _fixed_names(group)
+    if not group.ros_name and not group.in_place:
+        beside.update(BUILTIN_PARAMETERS, ["qos_overrides"])
     for path, item in _descendants(group):
         key = ".".join(path)
         ref = {"$ref": _ref(item, path)}
         if ENTRY_KEY in path:
-            patterns[_dotted_pattern(path)] = ref
+            patterns[_dotted_pattern(path, beside)] = ref
             continue
         properties[key] = ref
         if isinstance(item, Group) or not (required and item.required):

@@ -259,7 +259,8 @@ class _Checker:
         }
         where = sections[-1].params_location if sections else Location(self.document.file, 1, 1)
         for name, param in self.params.items():
-            if param.spec.required and name not in given:
+            # An adopted parameter may get its value from the code that declares it first.
+            if param.spec.required and not param.spec.adopt and name not in given:
                 for_node = f" for {node}" if node else ""
                 self.problems.append(
                     SchemaProblem(

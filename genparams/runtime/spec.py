@@ -256,7 +256,7 @@ def _compile(spec: SchemaSpec) -> CompiledSchema:
         extra: tuple[Validator, ...] = ()
         if maps:
             taken = tuple((m, _names_beside(spec, m)) for m in maps if m in in_place)
-            extra = (EntryKeys(", ".join(maps), taken),)
+            extra = (EntryKeys(", ".join(m or "the top level" for m in maps), taken),)
         compiled = compile_param(param_spec, extra)
         if in_place:
             compiled = replace(compiled, attribute_path=attribute_path(param_spec.name, in_place))

@@ -14,6 +14,8 @@ import pytest
 import genparams
 from genparams.gpl.convert import Imported, import_gpl
 from genparams.gpl.emit import schema_text, stub_text
+from genparams.paramsfile.check_params import check_params
+from genparams.paramsfile.params_reader import read_params_file
 from genparams.runtime.errors import ParameterDeclarationError
 from genparams.schema.loader import load_yaml
 from tests.gpl.corpus_cases import CORPUS, Section, same, schemas, sections, values_for
@@ -37,6 +39,7 @@ REJECTED = {
 class Loaded:
     imported: Imported
     module: types.ModuleType
+    schema_file: Path  # the imported genparams schema
 
     @property
     def params_cls(self) -> Any:
@@ -61,7 +64,8 @@ def load(schema: Path, tmp_path_factory: pytest.TempPathFactory) -> Loaded:
         module_name = unique_name(f"gen_{imported.name}")
         module_path = folder / f"{module_name}.py"
         module_path.write_text(genparams.generate(folder / f"{imported.name}.yaml"), "utf-8")
-        _LOADED[schema] = Loaded(imported, import_file(module_path, module_name))
+        module = import_file(module_path, module_name)
+        _LOADED[schema] = Loaded(imported, module, folder / f"{imported.name}.yaml")
     return _LOADED[schema]
 
 
@@ -112,3 +116,25 @@ def test_params_file_section_loads_with_equal_values(
         assert same(_read(tree, name), value), name
         checked += 1
     assert checked or not values_for(section)
+
+
+@pytest.mark.parametrize("section", sections(), ids=lambda s: s.id)
+def test_params_file_section_passes_check_params(
+    section: Section, tmp_path_factory: pytest.TempPathFactory
+) -> None:
+    """What loads on a node also passes the offline checks (and what is refused fails them)."""
+    loaded = load(section.schema, tmp_path_factory)
+    schema = genparams.load_schema(loaded.schema_file)
+    document = read_params_file(section.params_file.read_text("utf-8"), str(section.params_file))
+    report = check_params(schema, document, [f"/{section.node}"])
+    if section.node in REJECTED:
+        assert any(REJECTED[section.node].split(": ")[-1] in p.message for p in report.problems)
+        return
+    # Real files also configure other nodes, and keep keys their controllers no longer
+    # read: check-params names those (ROS ignores them); every value it checks must pass.
+    ignored = ("unknown parameter", "matches no node given by --node")
+    problems = [str(p) for p in report.problems if not any(i in p.message for i in ignored)]
+    if section.params_file.name == MISSING_REQUIRED:
+        assert problems and all("required" in p for p in problems)
+        return
+    assert problems == []
