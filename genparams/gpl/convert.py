@@ -294,10 +294,9 @@ class _Importer:
                 continue
             reason = check(value)
             if reason is not None:
-                del out["default"]
                 self.note(
                     (*doc_path, "default_value"),
-                    f"default {value!r} breaks its own validator ({reason}): "
+                    f"default {out.pop('default')!r} breaks its own validator ({reason}): "
                     "imported as a required parameter",
                 )
                 return

@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+import textwrap
 from typing import Any
 
 import yaml
 
 from genparams.gpl.convert import CustomUse, Imported
+from genparams.runtime.validator_kinds import KINDS
 
 # Python bodies for custom validators that ros2_controllers uses, whose meaning
 # their names and control_toolbox's documentation state: the import can write
@@ -34,10 +36,26 @@ class _Dumper(yaml.SafeDumper):
 
 
 def _list(dumper: yaml.SafeDumper, value: list[Any]) -> yaml.Node:
-    return dumper.represent_sequence("tag:yaml.org,2002:seq", value, flow_style=True)
+    """``[a, b]`` for values; one item a line for validators (lists holding mappings)."""
+    flow = not any(isinstance(item, (dict, list)) for item in value)
+    return dumper.represent_sequence("tag:yaml.org,2002:seq", value, flow_style=flow)
+
+
+def _text(dumper: yaml.SafeDumper, value: str) -> yaml.Node:
+    """Descriptions of several lines stay readable as literal blocks."""
+    style = "|" if "\n" in value.strip("\n") else None
+    return dumper.represent_scalar("tag:yaml.org,2002:str", value, style=style)
+
+
+def _mapping(dumper: yaml.SafeDumper, value: dict[str, Any]) -> yaml.Node:
+    """A validator entry (``{length: {min: 1}}``) on one line; everything else one key a line."""
+    flow = len(value) == 1 and next(iter(value)) in KINDS
+    return dumper.represent_mapping("tag:yaml.org,2002:map", value, flow_style=flow)
 
 
 _Dumper.add_representer(list, _list)
+_Dumper.add_representer(dict, _mapping)
+_Dumper.add_representer(str, _text)
 
 
 def schema_text(imported: Imported, source: str) -> str:
@@ -59,14 +77,16 @@ def schema_text(imported: Imported, source: str) -> str:
 def stub_text(imported: Imported, module: str) -> str:
     """A module defining every custom validator the schema references."""
     lines = [
-        f'"""Custom validators of the {imported.name} schema (referenced as {module}:NAME).',
+        f'"""Custom validators of the {imported.name} schema.',
+        "",
+        f"The schema references each as {module}:NAME.",
         "",
         "Each takes the parameter's value (then the schema's args) and returns None",
         'when it is valid, or a reason (str) when it is not."""',
         "",
         "from __future__ import annotations",
         "",
-        "import math",
+        *(["import math"] if set(imported.customs) & set(KNOWN_BODIES) else []),
         "from typing import Any",
     ]
     for name in sorted(imported.customs):
@@ -81,14 +101,21 @@ def _function(use: CustomUse) -> list[str]:
         signature, doc, body = known
         return [
             f"def {use.function}({signature}) -> str | None:",
-            f'    """{doc} (GPL: {use.gpl_name}; used by {users})."""',
+            *_docstring(f"{doc} GPL: {use.gpl_name}; used by {users}."),
             *body.rstrip("\n").split("\n"),
         ]
     takes = max((len(args) for _, args in use.used_by), default=0)
     params = "".join(f", arg{n}: Any" for n in range(takes))
     return [
         f"def {use.function}(value: Any{params}) -> str | None:",
-        f'    """GPL: {use.gpl_name}; used by {users}."""',
+        *_docstring(f"GPL: {use.gpl_name}; used by {users}."),
         "    # TODO: write the check GPL's C++ function made; this stub accepts every value.",
         "    return None",
     ]
+
+
+def _docstring(text: str) -> list[str]:
+    wrapped = textwrap.wrap(text, width=88)
+    lines = [f'    """{wrapped[0]}', *(f"    {line}" for line in wrapped[1:])]
+    lines[-1] += '"""'
+    return lines

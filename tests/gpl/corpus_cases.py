@@ -128,3 +128,35 @@ def same(a: Any, b: Any) -> bool:
     if isinstance(a, bytes) or isinstance(b, bytes):
         return bytes(a) == bytes(b)
     return bool(a == b)
+
+
+def gpl_declared(gpl_file: Path, keys: Any) -> dict[str, dict[str, Any]]:
+    """The parameters GPL declares for a file: dotted name -> its GPL leaf.
+
+    ``__map_X`` expands over the items of the parameter ``X`` found from the
+    innermost namespace outward, read with ``keys(dotted_name)``; ``type: none``
+    declares nothing.
+    """
+    data = yaml.safe_load(gpl_file.read_text(encoding="utf-8"))
+    ((_, tree),) = data.items()
+    out: dict[str, dict[str, Any]] = {}
+
+    def walk(node: dict[str, Any], prefix: list[str], scopes: list[tuple[list[str], Any]]) -> None:
+        for key, value in node.items():
+            if key.startswith("__map_"):
+                wanted = key[len("__map_") :]
+                key_name = wanted
+                for scope_prefix, scope in reversed(scopes):
+                    if isinstance(scope.get(wanted), dict) and "type" in scope[wanted]:
+                        key_name = ".".join([*scope_prefix, wanted])
+                        break
+                for item in keys(key_name) or ():
+                    walk(value, [*prefix, item], [*scopes, ([*prefix, item], value)])
+            elif isinstance(value, dict) and "type" in value:
+                if value["type"] != "none":
+                    out[".".join([*prefix, key])] = value
+            elif isinstance(value, dict):
+                walk(value, [*prefix, key], [*scopes, ([*prefix, key], value)])
+
+    walk(tree, [], [([], tree)])
+    return out

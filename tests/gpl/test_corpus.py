@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+import yaml
 
 import genparams
 from genparams.gpl.convert import Imported, import_gpl
@@ -17,8 +18,17 @@ from genparams.gpl.emit import schema_text, stub_text
 from genparams.paramsfile.check_params import check_params
 from genparams.paramsfile.params_reader import read_params_file
 from genparams.runtime.errors import ParameterDeclarationError
+from genparams.runtime.naming import NODE_PARAMETERS
 from genparams.schema.loader import load_yaml
-from tests.gpl.corpus_cases import CORPUS, Section, same, schemas, sections, values_for
+from tests.gpl.corpus_cases import (
+    CORPUS,
+    Section,
+    gpl_declared,
+    same,
+    schemas,
+    sections,
+    values_for,
+)
 from tests.support import RosHarness, import_file, unique_name
 
 # Files GPL itself refuses to load without overrides (its tests expect the failure).
@@ -108,6 +118,15 @@ def test_params_file_section_loads_with_equal_values(
         return
     cfg = loaded.params_cls.declare(node)
     tree = cfg.to_dict()
+    # The same names GPL declares for these keys, with GPL's description and read_only.
+    declared = gpl_declared(section.schema, lambda name: _value(node, name))
+    added = set(loaded.imported.data["parameters"]) - set(_top_names(section.schema))
+    ours = {n for n in node._parameters if n not in NODE_PARAMETERS} - added
+    assert ours == set(declared)
+    for name, leaf in declared.items():
+        descriptor = node.describe_parameter(name)
+        assert descriptor.description == leaf.get("description", ""), name
+        assert descriptor.read_only == bool(leaf.get("read_only", False)), name
     checked = 0
     for name, value in values_for(section).items():
         if not node.has_parameter(name) or name in ("use_sim_time",):
@@ -138,3 +157,12 @@ def test_params_file_section_passes_check_params(
         assert problems and all("required" in p for p in problems)
         return
     assert problems == []
+
+
+def _value(node: Any, name: str) -> Any:
+    return node.get_parameter(name).value if node.has_parameter(name) else None
+
+
+def _top_names(gpl_file: Path) -> list[str]:
+    ((_, tree),) = yaml.safe_load(gpl_file.read_text(encoding="utf-8")).items()
+    return [key for key in tree if not key.startswith("__map_")]
