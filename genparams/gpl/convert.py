@@ -233,7 +233,7 @@ class _Importer:
         if ".".join(ros_path) in self.adopt:
             out["adopt"] = True
             self.adopt.discard(".".join(ros_path))
-        validators = self.validators(leaf, doc_path, ros_path, base)
+        validators = self.validators(leaf, doc_path, ros_path, base, out)
         if capacity is not None:
             validators.insert(0, {"length": {"max": capacity}})
         if validators:
@@ -245,7 +245,12 @@ class _Importer:
         return out
 
     def validators(
-        self, leaf: dict[str, Any], doc_path: Path, ros_path: tuple[str, ...], base: str
+        self,
+        leaf: dict[str, Any],
+        doc_path: Path,
+        ros_path: tuple[str, ...],
+        base: str,
+        out_leaf: dict[str, Any],
     ) -> list[Any]:
         validation = leaf.get("validation") or {}
         if not isinstance(validation, dict):
@@ -261,6 +266,9 @@ class _Importer:
                 self.warn(where, f"{translated.problem}: validator left out")
                 continue
             out.extend(translated.validators)
+            if translated.range is not None:
+                # GPL puts scalar bounds in the descriptor's range, where ROS enforces them.
+                out_leaf["range"] = {"min": translated.range[0], "max": translated.range[1]}
             if translated.element_low is not None:
                 low = translated.element_low
             if translated.element_high is not None:
@@ -284,6 +292,14 @@ class _Importer:
             value = param_type.coerce_default(out["default"])
         except ValueTypeError:
             return  # a wrong default stays, so genparams reports it at its place
+        limits = out.get("range")
+        if limits is not None and not limits["min"] <= value <= limits["max"]:
+            self.note(
+                (*doc_path, "default_value"),
+                f"default {out.pop('default')!r} lies outside its own bounds: "
+                "imported as a required parameter",
+            )
+            return
         for entry in out.get("validators", []):
             rule, argument = (entry, None) if isinstance(entry, str) else next(iter(entry.items()))
             if rule == "custom" or rule not in KINDS:

@@ -24,6 +24,7 @@ class Translated:
     validators: tuple[Any, ...] = ()  # genparams validator entries (str or one-key dict)
     element_low: float | None = None  # lower_element_bounds, merged with upper later
     element_high: float | None = None
+    range: tuple[float, float] | None = None  # bounds of a scalar: the descriptor's range, as GPL
     custom: str = ""  # the Python function name the user implements
     problem: str = ""  # why it could not be translated
 
@@ -76,8 +77,9 @@ def _compare(rule: str) -> Callable[[str, list[Any], str], Translated]:
 def _bounds(name: str, args: list[Any], param_type: str) -> Translated:
     if len(args) != 2:
         raise ValueError(f"{name} takes [low, high], got {args!r}")
-    rule = "element_bounds" if param_type.endswith("_array") else "bounds"
-    return Translated(validators=({rule: list(args)},))
+    if param_type.endswith("_array"):
+        return Translated(validators=({"element_bounds": list(args)},))
+    return Translated(range=(args[0], args[1]))
 
 
 def _element_bound(side: str) -> Callable[[str, list[Any], str], Translated]:

@@ -127,6 +127,10 @@ def test_params_file_section_loads_with_equal_values(
         descriptor = node.describe_parameter(name)
         assert descriptor.description == leaf.get("description", ""), name
         assert descriptor.read_only == bool(leaf.get("read_only", False)), name
+        bounds = (leaf.get("validation") or {}).get("bounds<>")
+        if bounds is not None and not leaf["type"].endswith("array"):
+            (ros_range,) = [*descriptor.floating_point_range, *descriptor.integer_range]
+            assert (ros_range.from_value, ros_range.to_value) == tuple(bounds), name
     checked = 0
     for name, value in values_for(section).items():
         if not node.has_parameter(name) or name in ("use_sim_time",):

@@ -164,7 +164,7 @@ def test_adopting_a_parameter_other_code_declared_first(
 def test_an_adopted_value_is_validated(ros: RosHarness, features: types.ModuleType) -> None:
     node = ros.node()
     node.declare_parameter("overruns.print_warnings", "yes")
-    with pytest.raises(ParameterDeclarationError, match="overruns.print_warnings"):
+    with pytest.raises(ParameterDeclarationError, match=r"overruns\.print_warnings"):
         features.FeaturesParams.declare(node)
 
 
