@@ -62,6 +62,10 @@ def run(args: argparse.Namespace) -> int:
         print(f"{file}:1:1: {exc}", file=sys.stderr)
         return 2
     module = args.checks_module or f"{imported.name}_checks"
+    if imported.errors:
+        for problem in sorted([*imported.errors, *imported.warnings]):
+            print(problem, file=sys.stderr)
+        return 2
     text = schema_text(imported, args.gpl_file.name)
     target = args.output
     if args.out_dir is not None:
@@ -69,6 +73,8 @@ def run(args: argparse.Namespace) -> int:
     try:  # the result must be a schema genparams accepts, or nothing is written
         load_schema(target or f"<{imported.name}>", text)
     except SchemaError as exc:
+        for problem in sorted(imported.warnings):
+            print(problem, file=sys.stderr)
         print(exc, file=sys.stderr)
         print(f"genparams import-gpl: {file}: the imported schema is not valid", file=sys.stderr)
         return 2
@@ -86,7 +92,7 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _report(imported: Imported, module: str, outputs: dict[Path, str]) -> None:
-    for problem in [*imported.warnings, *imported.notes]:
+    for problem in sorted([*imported.warnings, *imported.notes]):
         print(problem, file=sys.stderr)
     if imported.customs:
         stub = next((p for p in outputs if p.suffix == ".py"), None)

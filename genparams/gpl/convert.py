@@ -45,6 +45,7 @@ class Imported:
     data: dict[str, Any]
     warnings: list[SchemaProblem] = field(default_factory=list)
     notes: list[SchemaProblem] = field(default_factory=list)  # changes of form, not losses
+    errors: list[SchemaProblem] = field(default_factory=list)  # what GPL itself refuses
     customs: dict[str, CustomUse] = field(default_factory=dict)
     parameters: int = 0  # GPL parameters seen
     imported: int = 0  # of them, present in the result
@@ -77,6 +78,7 @@ def import_gpl(
         data={"genparams": 1, "name": name, "parameters": parameters},
         warnings=importer.warnings,
         notes=importer.notes,
+        errors=importer.errors,
         customs=importer.customs,
         parameters=importer.seen,
         imported=importer.kept,
@@ -92,6 +94,7 @@ class _Importer:
         self.adopt = set(adopt)
         self.checks_module = checks_module
         self.warnings: list[SchemaProblem] = []
+        self.errors: list[SchemaProblem] = []
         self.notes: list[SchemaProblem] = []
         self.customs: dict[str, CustomUse] = {}
         self.seen = 0
@@ -226,6 +229,12 @@ class _Importer:
         out = {"type": base}
         if "default_value" in leaf:
             out["default"] = leaf["default_value"]
+            try:
+                TYPES[base].coerce_default(out["default"])
+            except ValueTypeError as exc:
+                where = (*doc_path, "default_value")
+                location = self.document.value_location(where)
+                self.errors.append(SchemaProblem(location, dotted(where), f"wrong default: {exc}"))
         if leaf.get("description"):
             out["description"] = leaf["description"]
         if leaf.get("read_only"):

@@ -156,3 +156,28 @@ def write_goldens() -> None:
 
 if __name__ == "__main__":
     write_goldens()
+
+
+INVALID = CORPUS / "generate_parameter_library/generate_parameter_library_py_test/schema_invalid"
+
+
+@pytest.mark.parametrize(
+    "name, first_line",
+    [
+        ("wrong_default_type", "4:20: namespace.param_name.default_value: wrong default: "
+         "expected double, got string 'string type'"),
+        ("invalid_parameter_type", "3:5: namespace.param_name.type: warning: unknown type "
+         "'string_non-type': parameter left out"),
+        ("missing_type", "3:5: namespace.param_name.description: warning: neither a parameter "
+         "(no type:) nor a namespace: left out"),
+        ("invalid_syntax", "5:3: invalid YAML: while parsing a block mapping did not find "
+         "expected key"),
+    ],
+)  # fmt: skip
+def test_files_gpl_refuses_are_refused_at_their_place(
+    name: str, first_line: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = INVALID / f"{name}.yaml"
+    code, out, err = run(capsys, str(source), "--out-dir", str(tmp_path))
+    assert (code, out, list(tmp_path.iterdir())) == (2, "", [])
+    assert err.splitlines()[0] == f"{source}:{first_line}"

@@ -175,3 +175,18 @@ def test_without_adopt_other_code_first_is_refused(
     node.declare_parameter("constraints.goal_time", 1.0)
     with pytest.raises(ParameterDeclarationError, match="already declared on this node"):
         features.FeaturesParams.declare(node)
+
+
+def test_remote_reads_and_sets_in_place_entries(
+    ros: RosHarness, features: types.ModuleType, params_file: Path
+) -> None:
+    node = ros.node(args=["--params-file", str(params_file)])
+    features.FeaturesParams.declare(node)
+    remote = features.FeaturesParams.remote(ros.client_node, node.get_fully_qualified_name())
+    assert remote.wait_for_services(timeout_sec=10.0)
+    snapshot = ros.wait(remote.get())
+    assert snapshot["wheel_left/position"].scale == 2.5
+    assert snapshot.constraints["shoulder"].goal == 0.3 and snapshot.defaults_.strictness == 2
+    ros.wait(remote.set({"constraints.elbow.goal": 0.9, "x-1.scale": 3.0}))
+    after = ros.wait(remote.get())
+    assert (after.constraints["elbow"].goal, after["x-1"].scale) == (0.9, 3.0)
