@@ -227,7 +227,7 @@ class Group:
     def slots(self) -> tuple[str, ...]:
         """Field attributes; ``_map`` holds the entries of an in-place mapped group."""
         names = tuple(f.attribute for f in self.fields)
-        return (*names, "_map") if self.entries_group is not None else names
+        return ("_map", *names) if self.entries_group is not None else names  # ruff's order
 
     def walk_groups(self) -> Iterator[Group]:
         """Every group below this one, children before parents (definition order)."""
