@@ -190,3 +190,24 @@ def test_remote_reads_and_sets_in_place_entries(
     ros.wait(remote.set({"constraints.elbow.goal": 0.9, "x-1.scale": 3.0}))
     after = ros.wait(remote.get())
     assert (after.constraints["elbow"].goal, after["x-1"].scale) == (0.9, 3.0)
+
+
+def test_top_level_key_list_changes_at_run_time(
+    ros: RosHarness, features: types.ModuleType
+) -> None:
+    node = ros.node()
+    cfg = features.FeaturesParams.declare(node)
+    seen: list[list[tuple[str, object, object]]] = []
+    cfg.on_change(lambda changes: seen.append([(c.name, c.old, c.new) for c in changes]))
+    client = ros.client(node)
+    (result,) = client.set(Parameter("interfaces", value=["a/b"]))
+    assert result.successful and list(cfg) == ["a/b"] and list(cfg.weights["elbow"]) == ["a/b"]
+    assert ("wheel_left/position.scale", 1.0, None) in seen[-1]
+    assert ("a/b.scale", None, 1.0) in seen[-1]
+    (result,) = client.set(Parameter("a/b.scale", value=3.0))
+    assert result.successful and cfg["a/b"].scale == cfg.snapshot()["a/b"].scale == 3.0
+    (result,) = client.set(Parameter("interfaces", value=["a/b", "joints"]))
+    assert result.reason == (
+        "interfaces: item 'joints' is already a name in the top level: an entry cannot share "
+        "it (for_each)"
+    )
