@@ -12,11 +12,17 @@ Schema counts 30.0 as an integer: the description says it instead).
 from __future__ import annotations
 
 import math
-import re
-from collections.abc import Callable, Collection, Iterator
+from collections.abc import Callable, Iterator
 from typing import Any
 
 from genparams.outputs.params_file import parameter_comment
+from genparams.outputs.schema_paths import (
+    ENTRY_KEY_PATTERN,
+    descendants,
+    dotted_pattern,
+    fixed_names,
+    open_descendants,
+)
 from genparams.outputs.yaml_text import value_text
 from genparams.paramsfile.ros_yaml import PARAMS_KEY
 from genparams.runtime.naming import ENTRY_KEY
@@ -33,13 +39,12 @@ from genparams.runtime.validators import (
     Unique,
     Validator,
 )
-from genparams.schema.model import Group, OpenNamespace, Parameter, Schema
+from genparams.schema.model import Group, Parameter, Schema
 from genparams.schema.specs import compiled_param, compiled_params
 
 DRAFT = "https://json-schema.org/draft/2020-12/schema"
 _TOKEN = "(\\*\\*|\\*|[A-Za-z_][A-Za-z0-9_]*)"
 NODE_KEY_PATTERN = f"^/?{_TOKEN}(/{_TOKEN})*$"
-ENTRY_KEY_PATTERN = "^[^.*\\s\\u0000-\\u001f\\u007f]+$"  # an entry's key: naming.ENTRY_KEY_TEXT
 # Parameters every rclpy node declares itself; a params file may set them for any node.
 BUILTIN_PARAMETERS: dict[str, dict[str, Any]] = {
     "use_sim_time": {"type": "boolean", "description": "Use /clock for time (every ROS node)."},
@@ -111,63 +116,14 @@ def _map_name(group: Group) -> str:
 def _map_schema(group: Group) -> dict[str, Any]:
     """A mapped group: entries keyed by items of its for_each parameter, nested or dotted."""
     patterns = {ENTRY_KEY_PATTERN: {"$ref": _group_ref(group)}}
-    for path, item in _descendants(group):
-        patterns[_dotted_pattern((ENTRY_KEY, *path))] = {"$ref": _ref(item, path)}
+    for path, item in descendants(group):
+        patterns[dotted_pattern((ENTRY_KEY, *path))] = {"$ref": _ref(item, path)}
     return {
         "type": "object",
         "description": f"One entry per item of {group.mapped_over}.",
         "patternProperties": patterns,
         "additionalProperties": False,
     }
-
-
-def _descendants(group: Group) -> Iterator[tuple[tuple[str, ...], Group | Parameter]]:
-    """Every parameter and group below ``group``, with its path relative to ``group``.
-
-    Below a mapped group, ``*`` holds the place of an entry's key.
-    """
-    for parameter in group.parameters:
-        yield (parameter.path[-1],), parameter
-    for child in group.groups:
-        if child.in_place:  # its entries sit right here, by key
-            entry: tuple[str, ...] = (ENTRY_KEY,)
-            yield entry, child
-        else:
-            yield (child.path[-1],), child
-            entry = (child.path[-1], ENTRY_KEY) if child.mapped_over else (child.path[-1],)
-            if child.mapped_over:
-                yield entry, child
-        for path, item in _descendants(child):
-            yield (*entry, *path), item
-
-
-def _open_descendants(group: Group) -> Iterator[tuple[tuple[str, ...], OpenNamespace]]:
-    """Every open namespace below ``group``, with its path relative to ``group``."""
-    depth = len(group.path) + (1 if group.mapped_over else 0)
-    for namespace in group.walk_open_namespaces():
-        yield namespace.path[depth:], namespace
-
-
-def _dotted_pattern(path: tuple[str, ...], beside: Collection[str] = ()) -> str:
-    """A regex for the dotted key of ``path``, with any entry key where ``*`` stands.
-
-    ``beside``: the fixed names of the namespace where a leading ``*`` (in-place
-    entries) stands; no entry key may be one of them, so no key matches both.
-    """
-    token = ENTRY_KEY_PATTERN[1:-1]
-    parts = [token if p == ENTRY_KEY else re.escape(p) for p in path]
-    if beside and path[:1] == (ENTRY_KEY,):
-        names = "|".join(re.escape(name) for name in sorted(beside))
-        parts[0] = f"(?!(?:{names})(?:\\.|$)){token}"
-    return "^" + "\\.".join(parts) + "$"
-
-
-def _fixed_names(group: Group) -> set[str]:
-    """The names written directly in ``group`` (not its in-place entries' keys)."""
-    names = {p.path[-1] for p in group.parameters}
-    names.update(g.path[-1] for g in group.groups if not g.in_place)
-    names.update(n.path[-1] for n in group.open_namespaces)
-    return names
 
 
 def _group_schema(group: Group, old_names: _OldNames, *, required: bool) -> dict[str, Any]:
@@ -178,14 +134,14 @@ def _group_schema(group: Group, old_names: _OldNames, *, required: bool) -> dict
         patterns["^qos_overrides\\."] = {}
     required_here: list[str] = []
     required_below: list[dict[str, Any]] = []
-    beside = _fixed_names(group)
+    beside = fixed_names(group)
     if not group.ros_name and not group.in_place:
         beside.update(BUILTIN_PARAMETERS, ["qos_overrides"])
-    for path, item in _descendants(group):
+    for path, item in descendants(group):
         key = ".".join(path)
         ref = {"$ref": _ref(item, path)}
         if ENTRY_KEY in path:
-            patterns[_dotted_pattern(path, beside)] = ref
+            patterns[dotted_pattern(path, beside)] = ref
             continue
         properties[key] = ref
         if isinstance(item, Group) or not (required and item.required):
@@ -197,12 +153,12 @@ def _group_schema(group: Group, old_names: _OldNames, *, required: bool) -> dict
             # own schema then requires the rest.
             prefixes = [".".join(path[:n]) for n in range(1, len(path) + 1)]
             required_below.append({"anyOf": [{"required": [prefix]} for prefix in prefixes]})
-    for path, namespace in _open_descendants(group):
+    for path, namespace in open_descendants(group):
         # Other code declares what lies here: any value, nested or dotted.
         if ENTRY_KEY not in path:
             properties[".".join(path)] = {"description": namespace.description or "Open namespace."}
-        patterns[_dotted_pattern(path)] = {"description": namespace.description}
-        patterns[_dotted_pattern(path)[:-1] + "\\."] = {}
+        patterns[dotted_pattern(path)] = {"description": namespace.description}
+        patterns[dotted_pattern(path)[:-1] + "\\."] = {}
     properties.update(old_names.properties(group))
     result: dict[str, Any] = {
         "type": "object",
