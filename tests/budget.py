@@ -3,7 +3,7 @@
 ``ci`` (default) keeps the robustness suite to a few minutes on two cores;
 ``dev`` runs ten times as many examples and fuzzes ten minutes per target:
 
-    GENPARAMS_TEST_PROFILE=dev .venv/bin/python -m pytest tests/test_properties.py
+    GENPARAMS_TEST_PROFILE=dev .venv/bin/python -m pytest tests/robustness/test_properties.py
 
 GENPARAMS_FUZZ_SECONDS overrides the fuzzing time of either profile.
 """

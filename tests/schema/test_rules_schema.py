@@ -164,7 +164,7 @@ def test_generated_module_with_rules_is_lint_and_type_clean(tmp_path: Path) -> N
     )
     output = tmp_path / "motion_params.py"
     assert main(["generate", str(schema), "-o", str(output)]) == 0
-    root = Path(__file__).resolve().parent.parent
+    root = Path(__file__).resolve().parents[2]
     config = str(root / "pyproject.toml")
     for command in (
         # RUF100: the header's blanket noqa for long lines is unused when no line is long.
