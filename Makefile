@@ -6,7 +6,7 @@ VENV ?= .venv
 PYTHON := $(VENV)/bin/python
 EXAMPLE := examples/camera_node
 
-.PHONY: venv demo demo-arm tour test check lint typecheck golden bench bench-quick bench-profile clean
+.PHONY: venv demo demo-arm tour test check lint typecheck golden docs bench bench-quick bench-profile clean
 
 $(VENV)/.installed: pyproject.toml
 	python3 -m venv $(VENV)
@@ -44,6 +44,10 @@ typecheck: venv
 ## Rewrite the golden files (generated modules, bad-schema errors, docs, check-params reports) after an intended change of output.
 golden: venv
 	$(PYTHON) -m tests.update_golden
+
+## The documentation site from docs/ (Sphinx + MyST) into build/docs/html; any warning fails.
+docs: venv
+	$(PYTHON) -m sphinx -W --keep-going -b html docs build/docs/html
 
 ## Benchmarks against hand-written rclpy at 10 to 10,000 parameters: docs/benchmarks.md and .csv.
 bench: venv

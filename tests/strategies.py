@@ -24,7 +24,7 @@ SCALAR_TYPES = ("bool", "int", "double", "string")
 ARRAY_TYPES = ("byte_array", "bool_array", "int_array", "double_array", "string_array")
 ALL_TYPES = SCALAR_TYPES + ARRAY_TYPES
 
-# Names the contract rejects (README "Schema format"); valid schemas never use them.
+# Names the contract rejects (docs/schema.md); valid schemas never use them.
 RESERVED_TOP_LEVEL = {
     "declare",
     "defaults",

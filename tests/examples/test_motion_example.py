@@ -1,4 +1,4 @@
-"""The README's tour of rules, composition, threads, remote access and lifecycle nodes runs."""
+"""The tour of docs/runtime-guide.md (make tour): rules, classes, threads, remote, lifecycle."""
 
 from __future__ import annotations
 

@@ -168,7 +168,7 @@ def test_defaults_accept_old_names(drive: types.ModuleType) -> None:
 
 
 def test_arm_demo_runs() -> None:
-    """The command of the README's "Mapped parameters" section."""
+    """The command of the "Mapped parameters" section of docs/runtime-guide.md."""
     result = subprocess.run(
         [sys.executable, str(ROOT / "examples" / "arm" / "demo.py")],
         capture_output=True,

@@ -85,9 +85,9 @@ def test_real_command_generate_exits_2_without_output(tmp_path: Path) -> None:
     assert not target.exists()
 
 
-# Peak RSS from VmHWM, the high-water mark of this process's own memory: ru_maxrss
-# keeps, across exec, the peak of the memory the process started from, which for a
-# child spawned by vfork is the parent's (a large pytest process, late in a full run).
+# Peak RSS is read as VmHWM, the high-water mark of this process's own memory:
+# getrusage's ru_maxrss survives exec, so a child started by a large pytest
+# process would report the parent's peak instead of its own.
 MEASURE = """
 import json, sys, time
 from genparams.api import load_schema
@@ -100,9 +100,9 @@ except SchemaError as exc:
     message = str(exc).splitlines()[0]
 print(json.dumps({
     "seconds": time.monotonic() - start,
-    "max_rss_mb": int(next(
-        line.split()[1] for line in open("/proc/self/status") if line.startswith("VmHWM:")
-    )) / 1024,
+    "max_rss_mb": next(
+        int(line.split()[1]) for line in open("/proc/self/status") if line.startswith("VmHWM:")
+    ) / 1024,
     "message": message,
 }))
 """
