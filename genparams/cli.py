@@ -8,17 +8,30 @@ from collections.abc import Sequence
 
 from genparams import __version__
 from genparams.commands import (
+    check_deployment,
     check_params,
     cmake_dir,
     defaults,
     docs,
+    explain,
     generate,
     import_gpl,
     json_schema,
     validate,
 )
 
-COMMANDS = (generate, validate, docs, defaults, json_schema, check_params, import_gpl, cmake_dir)
+COMMANDS = (
+    generate,
+    validate,
+    docs,
+    defaults,
+    json_schema,
+    check_params,
+    check_deployment,
+    explain,
+    import_gpl,
+    cmake_dir,
+)
 
 
 def build_parser() -> argparse.ArgumentParser:

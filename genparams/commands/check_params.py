@@ -1,4 +1,4 @@
-"""genparams check-params SCHEMA PARAMS.yaml... [--node /ns/name]..."""
+"""genparams check-params SCHEMA[@PREFIX] PARAMS.yaml... [--node /ns/name]... [--schema S@P]..."""
 
 from __future__ import annotations
 
@@ -6,8 +6,8 @@ import argparse
 import sys
 from pathlib import Path
 
-from genparams.commands._common import schema_or_none
-from genparams.paramsfile.check_params import check_params
+from genparams.commands._schemas import add_schema_arguments, bound_spec, load_bounds
+from genparams.paramsfile.check_params import check_files
 from genparams.paramsfile.params_reader import read_params_file
 from genparams.paramsfile.ros_yaml import absolute, node_name_problem
 
@@ -17,7 +17,7 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
         "check-params",
         help="check params files against a schema; exit 1 listing every problem",
     )
-    parser.add_argument("schema", metavar="SCHEMA", type=Path)
+    parser.add_argument("schema", metavar="SCHEMA[@PREFIX]", type=bound_spec)
     # Several files at once: pre-commit passes every matching file in one call.
     parser.add_argument("params", nargs="+", metavar="PARAMS.yaml", type=Path)
     parser.add_argument(
@@ -25,9 +25,26 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
         action="append",
         default=[],
         metavar="/NS/NAME",
-        help="a node that runs this schema (repeatable); sections matching none are errors",
+        help="check the sections rcl applies to this node (repeatable); other sections are "
+        "skipped. Without it, every section is read as this node's",
+    )
+    add_schema_arguments(parser)
+    add_known_argument(parser)
+    parser.add_argument(
+        "-v", "--verbose", action="store_true", help="also list skipped sections, with the reason"
     )
     parser.set_defaults(run=run)
+
+
+def add_known_argument(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "--known",
+        action="append",
+        default=[],
+        metavar="NAME",
+        help="a parameter other code declares on the node (a glob such as '*.type' too); "
+        "accepted with any value (repeatable)",
+    )
 
 
 def run(args: argparse.Namespace) -> int:
@@ -36,8 +53,8 @@ def run(args: argparse.Namespace) -> int:
         if problem is not None:
             print(f"genparams check-params: invalid --node {node!r}: {problem}", file=sys.stderr)
             return 2
-    schema = schema_or_none(args.schema)
-    if schema is None:
+    bounds = load_bounds([args.schema, *args.also])
+    if bounds is None:
         return 2
     code = 0
     for params in args.params:
@@ -48,9 +65,12 @@ def run(args: argparse.Namespace) -> int:
             code = 2
             continue
         document = read_params_file(text, str(params))
-        report = check_params(schema, document, [absolute(n) for n in args.node])
+        report = check_files(bounds, [document], [absolute(n) for n in args.node], args.known)
         for line in (*report.problems, *report.warnings):
             print(line)
+        if args.verbose:
+            for line in report.skipped:
+                print(line)
         if report.problems:
             code = max(code, 1)
     return code

@@ -1,4 +1,4 @@
-"""genparams defaults SCHEMA [--node NAME] [-o FILE]"""
+"""genparams defaults SCHEMA[@PREFIX] [--schema S[@P]]... [--node NAME] [-o FILE]"""
 
 from __future__ import annotations
 
@@ -6,16 +6,19 @@ import argparse
 import sys
 from pathlib import Path
 
-from genparams.commands._common import emit, schema_or_none
+from genparams.commands._common import emit
+from genparams.commands._schemas import add_schema_arguments, bound_spec, load_bounds
 from genparams.outputs.params_file import NodeNameError, default_params_file
 from genparams.outputs.render import render_params_file
+from genparams.schema.combine import combined_schema
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     parser = subparsers.add_parser(
         "defaults", help="write a params file holding every default of a schema"
     )
-    parser.add_argument("schema", metavar="SCHEMA", type=Path)
+    parser.add_argument("schema", metavar="SCHEMA[@PREFIX]", type=bound_spec)
+    add_schema_arguments(parser)
     parser.add_argument(
         "--node",
         metavar="NAME",
@@ -26,9 +29,10 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 
 
 def run(args: argparse.Namespace) -> int:
-    schema = schema_or_none(args.schema)
-    if schema is None:
+    bounds = load_bounds([args.schema, *args.also])
+    if bounds is None:
         return 2
+    schema = combined_schema([(b.schema, b.prefix) for b in bounds])
     try:
         params_file = default_params_file(schema, args.node)
     except NodeNameError as exc:

@@ -1,4 +1,4 @@
-"""genparams json-schema SCHEMA [--partial] [-o FILE]"""
+"""genparams json-schema SCHEMA[@PREFIX] [--schema S[@P]]... [--partial] [-o FILE]"""
 
 from __future__ import annotations
 
@@ -6,15 +6,18 @@ import argparse
 import json
 from pathlib import Path
 
-from genparams.commands._common import emit, schema_or_none
+from genparams.commands._common import emit
+from genparams.commands._schemas import add_schema_arguments, bound_spec, load_bounds
 from genparams.outputs.json_schema import params_file_schema
+from genparams.schema.combine import combined_schema
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     parser = subparsers.add_parser(
         "json-schema", help="write a JSON Schema of params files for a schema's node"
     )
-    parser.add_argument("schema", metavar="SCHEMA", type=Path)
+    parser.add_argument("schema", metavar="SCHEMA[@PREFIX]", type=bound_spec)
+    add_schema_arguments(parser)
     parser.add_argument(
         "--partial",
         action="store_true",
@@ -25,9 +28,10 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 
 
 def run(args: argparse.Namespace) -> int:
-    schema = schema_or_none(args.schema)
-    if schema is None:
+    bounds = load_bounds([args.schema, *args.also])
+    if bounds is None:
         return 2
+    schema = combined_schema([(b.schema, b.prefix) for b in bounds])
     document = params_file_schema(schema, partial=args.partial)
     emit(json.dumps(document, indent=2, ensure_ascii=False) + "\n", args.output)
     return 0

@@ -2,11 +2,12 @@
 
 Loading the file with ``--params-file`` into a node that declares the generated
 class changes nothing: every default is spelled so ROS reads it back with its
-declared type (see yaml_text); an empty list is written ``[]``, which ROS reads
-as "not set" and the runtime as an empty array of the declared type. Two kinds
-of parameter cannot be written and are left commented out, with the reason
-beside them: required parameters (they have no default; the node does not
-start until one is given) and subnormal doubles (ROS reads them as strings).
+declared type (see yaml_text). Three kinds of parameter cannot be written and
+are left commented out, with the reason beside them: required parameters (they
+have no default; the node does not start until one is given), subnormal
+doubles (ROS reads them as strings) and empty lists (ROS reads ``[]`` as "not
+set", and rclpy refuses that on a node that declares parameters from
+overrides, so a file holding one would not load into every node).
 """
 
 from __future__ import annotations
@@ -173,6 +174,12 @@ def _parameter_entry(parameter: Parameter, indent: str, comments: bool) -> Entry
         why = (f"Required {parameter.type.name}: no default; the node does not start without it.",)
         return Entry(indent, key, "", (*notes, *why), disabled=True)
     text = value_text(parameter.default, parameter.type)
+    if parameter.type.is_array and not parameter.default:
+        why = (
+            'Default: []. ROS reads an empty list as "not set", which some nodes refuse: '
+            "left out, the default applies.",
+        )
+        return Entry(indent, key, text, (*notes, *why), disabled=True)
     if not _reads_back(parameter):
         why = (f"Default: {text}. ROS reads this number back as a string: it cannot be written.",)
         return Entry(indent, key, text, (*notes, *why), disabled=True)

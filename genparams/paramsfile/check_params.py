@@ -1,30 +1,28 @@
-"""Check a deployment params file against a schema, offline, as the node would on start.
+"""Check params files for one node (or several), against one or more schemas.
 
-Values go through the runtime's own type conversion (``ParamType.from_ros``)
-and checks (``CompiledParam.check``, built by ``compile_param`` from the same
-spec a generated module holds), so what passes here passes on the robot and
-what fails here makes the node refuse to start. On top, it finds what ROS
-ignores silently: unknown keys (typos) and sections that match no node.
+A node gets the sections rcl applies to it (node_sections), in rcl's order;
+sections for other nodes are skipped, never errors. Each schema declared on
+the node (with its prefix) checks the entries under that prefix
+(section_checker). An entry is unknown, so silently ignored by ROS, only when
+no schema owns it, rclpy does not declare it on every node, and it is not
+declared known (a framework's parameters, such as ros2_control's ``type``).
 """
 
 from __future__ import annotations
 
 import dataclasses
 import difflib
+import fnmatch
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any
 
+from genparams.paramsfile.node_sections import rcl_order, sections_for
 from genparams.paramsfile.params_reader import ParamEntry, ParamsDocument, Section
-from genparams.paramsfile.ros_yaml import node_matches, ros_type_name
-from genparams.runtime.entries import expand
-from genparams.runtime.naming import ENTRY_KEY, ENTRY_KEY_RULE, is_entry_key
-from genparams.runtime.spec import CompiledParam
-from genparams.runtime.types import ValueTypeError
-from genparams.runtime.validators import Custom
-from genparams.schema.errors import Location, SchemaProblem
+from genparams.paramsfile.ros_yaml import ros_type_name
+from genparams.paramsfile.section_checker import SectionChecker
+from genparams.runtime.naming import join_prefix
+from genparams.schema.errors import SchemaProblem
 from genparams.schema.model import Schema
-from genparams.schema.specs import compiled_schema
 
 # Parameters rclpy declares on every node, by type; and a namespace it owns.
 BUILTIN_PARAMETERS = {"use_sim_time": "bool", "start_type_description_service": "bool"}
@@ -32,284 +30,164 @@ BUILTIN_PREFIXES = ("qos_overrides.",)
 
 
 @dataclass(frozen=True)
+class Bound:
+    """One schema's class declared on the node, under ``prefix`` ("" for the root)."""
+
+    schema: Schema
+    prefix: str = ""
+
+
+@dataclass(frozen=True)
 class Report:
     problems: tuple[SchemaProblem, ...]  # what makes the file wrong: exit 1
     warnings: tuple[SchemaProblem, ...]  # worth knowing, not wrong (deprecation, unchecked rules)
+    skipped: tuple[SchemaProblem, ...] = ()  # sections for other nodes, with the reason
 
 
-def check_params(schema: Schema, document: ParamsDocument, nodes: Sequence[str] = ()) -> Report:
-    """Check every section of ``document`` that applies to one of ``nodes``.
+def check_params(
+    schema: Schema,
+    document: ParamsDocument,
+    nodes: Sequence[str] = (),
+    *,
+    also: Sequence[Bound] = (),
+    known: Sequence[str] = (),
+) -> Report:
+    """Check the sections of ``document`` that reach one of ``nodes``.
 
     Without ``nodes``, every section is taken to be for this schema's node.
     """
-    checker = _Checker(schema, document, tuple(nodes))
-    checker.run()
-    return Report(tuple(sorted(set(checker.problems))), tuple(sorted(set(checker.warnings))))
+    return check_files([Bound(schema), *also], [document], nodes, known)
 
 
-class _Checker:
-    def __init__(self, schema: Schema, document: ParamsDocument, nodes: tuple[str, ...]) -> None:
-        self.schema = schema
-        self.document = document
-        self.nodes = nodes
-        self.problems: list[SchemaProblem] = list(document.problems)
-        self.warnings: list[SchemaProblem] = []
-        self.deprecated = {p.ros_name: p.deprecated for p in schema.parameters if p.deprecated}
-        compiled = compiled_schema(schema)
-        self.compiled = dataclasses.replace(
-            compiled,
-            parameters={n: self.offline(p) for n, p in compiled.parameters.items()},
-            templates={n: self.offline(p) for n, p in compiled.templates.items()},
+def check_files(
+    bounds: Sequence[Bound],
+    documents: Sequence[ParamsDocument],
+    nodes: Sequence[str] = (),
+    known: Sequence[str] = (),
+    *,
+    near_misses: bool = True,
+) -> Report:
+    """Check params files given in this order (as rcl gets them) for ``nodes``.
+
+    A skipped section that looks meant for one of ``nodes`` (a typo in its name
+    or namespace) is a warning, unless ``near_misses`` is False (the caller
+    reports unclaimed sections itself).
+    """
+    problems: list[SchemaProblem] = [p for d in documents for p in d.problems]
+    files = [d.sections for d in documents]
+    applied, per_node, skipped, warnings = _node_sections(files, nodes)
+    if not near_misses:
+        warnings = []
+    if any(d.problems and not d.sections for d in documents):
+        per_node = []  # nothing could be read: a list of every required parameter adds only noise
+    file = documents[0].file if documents else "-"
+    checkers = []
+    for bound in bounds:
+        checker = SectionChecker(bound.schema, file)
+        checker.run(
+            own_sections(applied, bound.prefix),
+            [(n, own_sections(s, bound.prefix)) for n, s in per_node],
         )
-        self.params: dict[str, CompiledParam] = dict(self.compiled.parameters)
-        self.old_names: dict[str, ParamEntry] = {}  # old name -> the entry that used it
+        problems.extend(_prefixed(p, bound.prefix) for p in checker.problems)
+        warnings.extend(_prefixed(p, bound.prefix) for p in checker.warnings)
+        checkers.append((bound.prefix, checker))
+    owned = [join_prefix(prefix, name) for prefix, checker in checkers for name in checker.names()]
+    for entry in (e for section in applied for e in section.entries):
+        if not any(_claims(prefix, checker, entry) for prefix, checker in checkers):
+            problem = _unowned(entry, owned, known)
+            if problem is not None:
+                problems.append(problem)
+    return Report(tuple(sorted(set(problems))), tuple(sorted(set(warnings))), tuple(skipped))
 
-    def offline(self, param: CompiledParam) -> CompiledParam:
-        """The checks that can run here: a custom validator whose module is missing is skipped."""
-        kept = []
-        for check in param.checks:
-            if isinstance(check, Custom):
-                try:
-                    check.resolve()
-                except Exception as exc:
-                    self.warnings.append(
-                        SchemaProblem(
-                            Location(self.document.file, 1, 1),
-                            param.name,
-                            f"warning: custom validator {check.target} not checked "
-                            f"(cannot import it here: {type(exc).__name__})",
-                        )
-                    )
-                    continue
-            kept.append(check)
-        return dataclasses.replace(param, checks=tuple(kept))
 
-    def run(self) -> None:
-        applied = self.applied_sections()
-        self.params.update(expand(self.compiled, self.key_lists(applied)))
-        for section in applied:
-            for entry in section.entries:
-                self.entry(entry)
-        self.renamed_twice(applied)
-        if self.document.problems and not self.document.sections:
-            return  # nothing could be read: a list of every required parameter adds only noise
-        for node in self.nodes or ("",):
-            sections = [s for s in applied if not node or node_matches(s.node, node)]
-            self.required(node, sections)
-            self.rules(node, sections)
-
-    def applied_sections(self) -> list[Section]:
-        applied: list[Section] = []
-        for section in self.document.sections:
-            if self.nodes and not any(node_matches(section.node, n) for n in self.nodes):
-                self.problems.append(
-                    SchemaProblem(
-                        section.node_location,
-                        section.node,
-                        f"section matches no node given by --node ({', '.join(self.nodes)})",
-                    )
-                )
-                continue
-            applied.append(section)
-        return applied
-
-    def key_lists(self, sections: list[Section]) -> dict[str, Any]:
-        """The items of each for_each parameter: as the file gives them (valid), else default."""
-        keys: dict[str, Any] = {}
-        for name in set(self.compiled.maps.values()):
-            param = self.params[name]
-            if not param.spec.required:
-                keys[name] = param.type.coerce_default(param.spec.default)
-        for section in sections:
-            for entry in section.entries:
-                name = self.compiled.aliases.get(entry.name, entry.name)
-                if name in keys or name in self.compiled.maps.values():
-                    try:
-                        value = self.params[name].type.from_ros(entry.value)
-                    except ValueTypeError:
-                        continue
-                    if self.params[name].check(value) is None:
-                        keys[name] = value
-        return keys
-
-    def entry(self, entry: ParamEntry) -> None:
-        param = self.params.get(entry.name)
-        current = self.compiled.aliases.get(entry.name)
-        if param is None and current is not None:
-            self.warnings.append(
-                SchemaProblem(
-                    entry.key_location,
-                    entry.name,
-                    f"warning: deprecated: old name of {current}; write {current}",
-                )
+def _node_sections(
+    files: Sequence[Sequence[Section]], nodes: Sequence[str]
+) -> tuple[
+    list[Section], list[tuple[str, list[Section]]], list[SchemaProblem], list[SchemaProblem]
+]:
+    """Sections that reach any of ``nodes``; each node's own; the skipped ones; near misses."""
+    if not nodes:
+        every = rcl_order(files)
+        return every, [("", every)], [], []
+    per_node = []
+    reasons: dict[int, tuple[str, str]] = {}  # section -> (node it near-misses or "", reason)
+    for node in nodes:
+        applied, skipped = sections_for(files, node)
+        per_node.append((node, applied))
+        for skip in skipped:
+            if skip.near_miss or id(skip.section) not in reasons:
+                reasons[id(skip.section)] = (node if skip.near_miss else "", skip.reason)
+    reached = {id(s) for _, applied in per_node for s in applied}
+    ordered = rcl_order(files)
+    union = [s for s in ordered if id(s) in reached]
+    skipped_lines, near = [], []
+    for section in (s for s in ordered if id(s) not in reached):
+        node, reason = reasons[id(section)]
+        if node:
+            message = f"warning: ROS applies this section to another node, not {node}: {reason}"
+            near.append(SchemaProblem(section.node_location, section.node, message))
+        else:
+            skipped_lines.append(
+                SchemaProblem(section.node_location, section.node, f"skipped: {reason}")
             )
-            self.old_names[entry.name] = entry
-            param = self.params[current]
-        if param is None:
-            if not self.in_open_namespace(entry) and not self.unmapped(entry):
-                self.unknown(entry)
-            return
-        if entry.name in self.deprecated:
-            self.warnings.append(
-                SchemaProblem(
-                    entry.key_location,
-                    entry.name,
-                    f"warning: deprecated: {self.deprecated[entry.name]}",
-                )
-            )
-        try:
-            value = param.type.from_ros(entry.value)
-        except ValueTypeError as exc:
-            message = f"wrong type: {exc}"
-            if entry.written_empty:
-                message = (
-                    'ROS reads an empty list as "not set", which the node refuses: '
-                    "leave the parameter out to keep its default"
-                )
-            self.problems.append(SchemaProblem(entry.value_location, entry.name, message))
-            return
-        reason = param.check(value)
-        if reason is not None:
-            self.problems.append(SchemaProblem(entry.value_location, entry.name, reason))
+    return union, per_node, skipped_lines, near
 
-    def in_open_namespace(self, entry: ParamEntry) -> bool:
-        """Under a namespace other code declares: not the schema's to check."""
-        parts = entry.name.split(".")
-        return any(
-            len(parts) > len(ns.path)
-            and all(t in (p, ENTRY_KEY) for p, t in zip(parts, ns.path, strict=False))
-            for ns in self.schema.open_namespaces
+
+def own_sections(sections: Sequence[Section], prefix: str) -> list[Section]:
+    """The sections as a class under ``prefix`` sees them: its entries, names relative."""
+    if not prefix:
+        return list(sections)
+    head = prefix + "."
+    return [
+        dataclasses.replace(
+            section,
+            entries=tuple(
+                dataclasses.replace(e, name=e.name[len(head) :])
+                for e in section.entries
+                if e.name.startswith(head)
+            ),
         )
+        for section in sections
+    ]
 
-    def unmapped(self, entry: ParamEntry) -> bool:
-        """An entry of a mapped group for a key the key list does not hold; False if none."""
-        parts = entry.name.split(".")
-        for template in self.compiled.templates:
-            pattern = template.split(".")
-            if len(pattern) != len(parts) or any(
-                t not in (p, ENTRY_KEY) for p, t in zip(parts, pattern, strict=True)
-            ):
-                continue
-            keys = [p for p, t in zip(parts, pattern, strict=True) if t == ENTRY_KEY]
-            maps = [".".join(pattern[:i]) for i, t in enumerate(pattern) if t == ENTRY_KEY]
-            for key, mapped in zip(keys, maps, strict=True):
-                key_name = self.compiled.maps[mapped]
-                if not is_entry_key(key):
-                    message = (
-                        f"unknown parameter: {key!r} cannot be an item of {key_name} (use "
-                        f"{ENTRY_KEY_RULE}): no entry would ever have this name"
-                    )
-                    self.problems.append(SchemaProblem(entry.key_location, entry.name, message))
-                    return True
-            key_names = ", ".join(self.compiled.maps[m] for m in maps)
-            self.warnings.append(
-                SchemaProblem(
-                    entry.key_location,
-                    entry.name,
-                    f"warning: {'.'.join(keys)!r} is not among the items of {key_names}; "
-                    "the node uses this only once they hold it",
-                )
-            )
-            return True
+
+def _claims(prefix: str, checker: SectionChecker, entry: ParamEntry) -> bool:
+    head = prefix + "." if prefix else ""
+    if not entry.name.startswith(head):
         return False
+    name = entry.name[len(head) :]
+    return not any(
+        u.key_location == entry.key_location and u.name == name for u in checker.unknown_entries
+    )
 
-    def renamed_twice(self, sections: list[Section]) -> None:
-        """An old name and the current one, given different values: the node refuses."""
-        given = {e.name: e for section in sections for e in section.entries}
-        for old, entry in self.old_names.items():
-            current = self.compiled.aliases[old]
-            if current in given and given[current].value != entry.value:
-                self.problems.append(
-                    SchemaProblem(
-                        entry.key_location,
-                        old,
-                        f"old name of {current}, which is given another value: keep only {current}",
-                    )
-                )
 
-    def unknown(self, entry: ParamEntry) -> None:
-        builtin = BUILTIN_PARAMETERS.get(entry.name)
-        if builtin is not None:
-            if not isinstance(entry.value, bool):
-                got = "nothing" if entry.value is None else _shown(entry.value)
-                self.problems.append(
-                    SchemaProblem(
-                        entry.value_location,
-                        entry.name,
-                        f"wrong type: expected {builtin}, got {got}",
-                    )
-                )
-            return
-        if entry.name.startswith(BUILTIN_PREFIXES):
-            return
-        hint = suggestion(entry.name, [*self.params, *self.compiled.templates, *BUILTIN_PARAMETERS])
-        self.problems.append(
-            SchemaProblem(
-                entry.key_location,
-                entry.name,
-                f"unknown parameter{hint}: ROS would ignore it",
-            )
+def _prefixed(problem: SchemaProblem, prefix: str) -> SchemaProblem:
+    if not prefix or not problem.key:
+        return problem
+    return dataclasses.replace(problem, key=join_prefix(prefix, problem.key))
+
+
+def _unowned(entry: ParamEntry, owned: list[str], known: Sequence[str]) -> SchemaProblem | None:
+    """The problem with an entry no schema owns, or None when rclpy or a framework owns it."""
+    builtin = BUILTIN_PARAMETERS.get(entry.name)
+    if builtin is not None:
+        if isinstance(entry.value, bool):
+            return None
+        got = "nothing" if entry.value is None else _shown(entry.value)
+        return SchemaProblem(
+            entry.value_location, entry.name, f"wrong type: expected {builtin}, got {got}"
         )
+    if entry.name.startswith(BUILTIN_PREFIXES) or is_known(entry.name, known):
+        return None
+    hint = suggestion(entry.name, [*owned, *BUILTIN_PARAMETERS])
+    return SchemaProblem(
+        entry.key_location, entry.name, f"unknown parameter{hint}: ROS would ignore it"
+    )
 
-    def required(self, node: str, sections: list[Section]) -> None:
-        given = {
-            self.compiled.aliases.get(entry.name, entry.name)
-            for section in sections
-            for entry in section.entries
-        }
-        where = sections[-1].params_location if sections else Location(self.document.file, 1, 1)
-        for name, param in self.params.items():
-            # An adopted parameter may get its value from the code that declares it first.
-            if param.spec.required and not param.spec.adopt and name not in given:
-                for_node = f" for {node}" if node else ""
-                self.problems.append(
-                    SchemaProblem(
-                        where,
-                        name,
-                        f"required parameter is not set{for_node} "
-                        f"(it has no default: add {name.rsplit('.', 1)[-1]}: "
-                        f"<{param.type.name}>)",
-                    )
-                )
 
-    def rules(self, node: str, sections: list[Section]) -> None:
-        """Rules over the values the node would start with: its defaults, then this file."""
-        if not self.compiled.rules:
-            return
-        values: dict[str, Any] = {}
-        unusable: set[str] = set()  # given with a wrong value, already reported
-        entries: dict[str, ParamEntry] = {}
-        for name, param in self.compiled.parameters.items():
-            if not param.spec.required:
-                values[name] = param.type.coerce_default(param.spec.default)
-        for section in sections:
-            for entry in section.entries:
-                name = self.compiled.aliases.get(entry.name, entry.name)
-                if name not in self.compiled.parameters:
-                    continue
-                param = self.compiled.parameters[name]
-                entries[name] = entry
-                try:
-                    value = param.type.from_ros(entry.value)
-                except ValueTypeError:
-                    unusable.add(name)
-                    continue
-                if param.check(value) is None:
-                    values[name] = value
-                    unusable.discard(name)
-                else:
-                    unusable.add(name)
-        for rule in self.compiled.rules:
-            if any(n not in values or n in unusable for n in rule.parameters):
-                continue  # a required parameter missing, or a bad value: already reported
-            reason = rule.violation(values)
-            if reason is None:
-                continue
-            given = [entries[n] for n in rule.parameters if n in entries]
-            where = given[0].key_location if given else Location(self.document.file, 1, 1)
-            key = given[0].name if given else ""
-            for_node = f" (for {node})" if node else ""
-            self.problems.append(SchemaProblem(where, key, reason + for_node))
+def is_known(name: str, known: Sequence[str]) -> bool:
+    """Whether ``name`` is one of ``known``: names or globs (``*.type``) owned by other code."""
+    return any(fnmatch.fnmatchcase(name, pattern) for pattern in known)
 
 
 def _shown(value: object) -> str:

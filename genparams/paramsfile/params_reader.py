@@ -15,6 +15,7 @@ from typing import Any
 
 import yaml
 
+from genparams.paramsfile.rcl_lists import contains_mapping, read_list
 from genparams.paramsfile.ros_yaml import (
     PARAMS_KEY,
     NoValue,
@@ -100,6 +101,8 @@ class _Reader:
     document: LoadedDocument
     sections: list[Section] = field(default_factory=list)
     problems: list[SchemaProblem] = field(default_factory=list)
+    # In the section being read: (entries before and with it, where, name) of each {}.
+    empty_mappings: list[tuple[int, Location, str]] = field(default_factory=list)
 
     def problem(self, location: Location, key: str, message: str) -> None:
         self.problems.append(SchemaProblem(location, key, message))
@@ -119,13 +122,25 @@ class _Reader:
         self.node_level(data, (), ())
 
     def node_level(self, mapping: dict[str, Any], path: Path, names: tuple[str, ...]) -> None:
+        params_seen = False
         for key, value in mapping.items():
             key_path = (*path, key)
             where = self.document.key_location(key_path)
             # ROS compares only the start of the key with ros__parameters.
             if key.startswith(PARAMS_KEY):
                 self.section(key_path, names, value)
-            elif _looks_like_params_key(key):
+                params_seen = True
+                continue
+            if params_seen and isinstance(value, dict):
+                # rcl closes the node name at ros__parameters: a node nested after it
+                # loses its namespace, and rcl fails on its first parameter.
+                self.problem(
+                    where,
+                    key,
+                    f"a node nested after {PARAMS_KEY} of {absolute('/'.join(names))}: "
+                    f"ROS refuses the file (write the nested nodes before {PARAMS_KEY})",
+                )
+            if _looks_like_params_key(key):
                 self.problem(
                     where,
                     key,
@@ -165,23 +180,51 @@ class _Reader:
             )
             return
         entries: list[ParamEntry] = []
+        self.empty_mappings = []
         self.parameters(value, key_path, "", entries)
+        for count, where, name in self.empty_mappings:
+            if count < len(entries):
+                # rcl closes one namespace too many at "{}": the keys after it land
+                # outside ros__parameters, where rcl refuses values.
+                self.problem(
+                    where,
+                    name,
+                    "an empty mapping {} before other keys: ROS refuses the file "
+                    "(leave the key out, or move it last)",
+                )
         self.sections.append(Section(node, node_location, where, tuple(entries)))
         self.check_repeats(entries)
 
     def parameters(
         self, mapping: dict[str, Any], path: Path, prefix: str, entries: list[ParamEntry]
     ) -> None:
+        meant = prefix  # the namespace a reader expects; rcl's may drift from it
         for key, value in mapping.items():
             key_path = (*path, key)
             name = f"{prefix}.{key}" if prefix else key
+            if prefix != meant:
+                expected = f"{meant}.{key}"
+                self.problem(
+                    self.document.key_location(key_path),
+                    expected,
+                    f"ROS reads this key as {name!r}: a dotted key holding a mapping above "
+                    "it shifts the names after it (nest the keys instead of dotting them)",
+                )
             if isinstance(value, dict) and value:
                 self.parameters(value, key_path, name, entries)
+                # rcl leaves a nested mapping by dropping the last dotted token of its
+                # name: after "b.c: {...}" under "a", the next key is "a.b.<key>".
+                if prefix:
+                    prefix = name.rpartition(".")[0]
                 continue
             key_location = self.document.key_location(key_path)
             value_location = self.document.value_location(key_path)
-            if isinstance(value, (dict, list)) and not value:
+            if contains_mapping(value):
+                self.rcl_list(name, key_path, value, prefix, entries)
+            elif isinstance(value, (dict, list)) and not value:
                 entries.append(ParamEntry(name, None, key_location, value_location, True))
+                if isinstance(value, dict):
+                    self.empty_mappings.append((len(entries), value_location, name))
             elif isinstance(value, list):
                 items = self.list_items(value, key_path, name)
                 if items is not None:
@@ -194,6 +237,24 @@ class _Reader:
                 )
             else:
                 entries.append(ParamEntry(name, value, key_location, value_location))
+
+    def rcl_list(
+        self, name: str, path: Path, items: list[Any], prefix: str, entries: list[ParamEntry]
+    ) -> None:
+        """A list holding mappings: read as rcl reads it (see rcl_lists), not as YAML does."""
+        records, problems = read_list(name, path, items, prefix)
+        for where, message in problems:
+            self.problem(self.document.value_location(where), name, message)
+        for record in records:
+            value_path = record.value_path if record.value_path is not None else record.key_path
+            entries.append(
+                ParamEntry(
+                    record.name,
+                    record.value,
+                    self.document.key_location(record.key_path),
+                    self.document.value_location(value_path),
+                )
+            )
 
     def list_items(self, items: list[Any], path: Path, name: str) -> list[Any] | None:
         kinds: list[str] = []

@@ -80,7 +80,7 @@ class Binding(Generic[P]):
             node, full, old_names_by_current(compiled.aliases), adopted=compiled.adopted
         )
         parameters, values, problems = resolve_all(compiled, reader.read, full)
-        problems[:0] = reader.problems
+        problems = reader.with_problems(problems)
         if problems:
             raise ParameterDeclarationError(spec.name, node.get_fully_qualified_name(), problems)
 

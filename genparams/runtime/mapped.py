@@ -119,7 +119,7 @@ class MappedEntries:
         new_values, problems = resolve_values(
             self.compiled, reader.read(added), self.full_name, parameters=added
         )
-        problems[:0] = reader.problems
+        problems = reader.with_problems(problems)
         changed = ", ".join(self.full_name(name) for name in proposed)
         if problems:
             return SetParametersResult(
@@ -185,7 +185,7 @@ class MappedEntries:
             new_values, problems = resolve_values(
                 self.compiled, given, self.full_name, parameters=added
             )
-            problems[:0] = reader.problems
+            problems = reader.with_problems(problems)
             if problems:
                 # The on-set round checked these: only a concurrent declaration gets here.
                 binding.node.get_logger().error(

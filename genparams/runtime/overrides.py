@@ -40,6 +40,7 @@ class OverrideReader:
         self.predeclared: list[str] = []  # full names
         self.renamed: list[tuple[str, str]] = []  # (old full name, full name) an override used
         self.given: list[str] = []  # relative names an override was found for
+        self.taken: list[str] = []  # full names other code declared first
 
     def read(self, names: Iterable[str]) -> dict[str, Any]:
         """ROS-form values given for relative ``names`` (absent when none was given)."""
@@ -69,12 +70,22 @@ class OverrideReader:
         if self.node.has_parameter(full_name):
             if full_name not in self.overrides and full_name not in self.adopted:
                 self.problems.append(f"{full_name}: already declared on this node by other code")
+                self.taken.append(full_name)
                 return _MISSING
             self.predeclared.append(full_name)
             return self.node.get_parameter(full_name).value
         if full_name in self.overrides:
             return self.overrides[full_name].value
         return _MISSING
+
+    def with_problems(self, problems: list[str]) -> list[str]:
+        """This reader's problems, then ``problems`` less what they repeat.
+
+        A parameter other code declared first is reported once, as that: it is
+        not also "required parameter is not set".
+        """
+        repeated = tuple(f"{name}: required parameter is not set" for name in self.taken)
+        return [*self.problems, *(p for p in problems if not p.startswith(repeated))]
 
     def release_predeclared(self) -> None:
         """Undeclare what rclpy declared from overrides, so it is declared again, fully."""

@@ -1,0 +1,61 @@
+"""Schemas bound to one node, from the command line: ``SCHEMA`` or ``SCHEMA@PREFIX``."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from genparams.commands._common import schema_or_none
+from genparams.paramsfile.check_params import Bound
+from genparams.runtime.naming import is_ros_token, join_prefix
+
+
+def bound_spec(text: str) -> tuple[Path, str]:
+    """``camera.yaml@front`` -> (camera.yaml, "front"); argparse type, so bad input exits 2."""
+    path, _, prefix = text.rpartition("@") if "@" in text else (text, "", "")
+    if prefix and not all(is_ros_token(part) for part in prefix.split(".")):
+        raise argparse.ArgumentTypeError(
+            f"invalid prefix {prefix!r} in {text!r}: dot-separated names of letters, digits, '_'"
+        )
+    return Path(path), prefix
+
+
+def add_schema_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "--schema",
+        dest="also",
+        action="append",
+        default=[],
+        type=bound_spec,
+        metavar="SCHEMA[@PREFIX]",
+        help="another class declared on the same node, under PREFIX (repeatable)",
+    )
+
+
+def load_bounds(specs: list[tuple[Path, str]]) -> list[Bound] | None:
+    """The schemas, or None after printing what is wrong (the caller exits 2)."""
+    bounds = []
+    for path, prefix in specs:
+        schema = schema_or_none(path)
+        if schema is None:
+            return None
+        bounds.append(Bound(schema, prefix))
+    prefixes = [b.prefix for b in bounds]
+    for bound in bounds:
+        for other in bounds:
+            if other is not bound and _overlap(bound, other):
+                print(
+                    f"genparams: {bound.schema.source_name} and {other.schema.source_name} "
+                    f"both declare {_overlap(bound, other)} (prefixes {prefixes})",
+                    file=sys.stderr,
+                )
+                return None
+    return bounds
+
+
+def _overlap(one: Bound, other: Bound) -> str:
+    """A parameter both classes would declare, or ""."""
+    mine = {join_prefix(one.prefix, p.ros_name) for p in one.schema.parameters}
+    theirs = {join_prefix(other.prefix, p.ros_name) for p in other.schema.parameters}
+    return min(mine & theirs, default="")

@@ -1,0 +1,110 @@
+"""genparams check-deployment PARAMS.yaml... (--manifest FILE | --map NODE=SCHEMA...)"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from genparams.commands._common import schema_or_none
+from genparams.commands.check_params import add_known_argument
+from genparams.paramsfile.check_params import Bound
+from genparams.paramsfile.deployment import Deployed, check_deployment
+from genparams.paramsfile.manifest import Manifest, NodeEntry, parse_map, read_manifest
+from genparams.paramsfile.params_reader import read_params_file
+from genparams.schema.errors import SchemaError
+from genparams.schema.model import Schema
+
+
+def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    parser = subparsers.add_parser(
+        "check-deployment",
+        help="check every node section of bringup params files against its node's schemas",
+    )
+    parser.add_argument("params", nargs="+", metavar="PARAMS.yaml", type=Path)
+    parser.add_argument("--manifest", type=Path, metavar="FILE", help="nodes -> schemas, known")
+    parser.add_argument(
+        "--map",
+        action="append",
+        default=[],
+        metavar="NODE=SCHEMA[@PREFIX][,...]",
+        help="a node (or pattern) and its schemas, beside or instead of a manifest (repeatable)",
+    )
+    add_known_argument(parser)
+    parser.add_argument(
+        "-v", "--verbose", action="store_true", help="say which node got which check"
+    )
+    parser.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    manifest = _manifest(args)
+    if manifest is None:
+        return 2
+    deployed = deployed_schemas(manifest)
+    if deployed is None:
+        return 2
+    code = 0
+    for params in args.params:
+        try:
+            text = params.read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError) as exc:
+            print(f"genparams check-deployment: cannot read {params}: {exc}", file=sys.stderr)
+            code = 2
+            continue
+        document = read_params_file(text, str(params))
+        report, checked = check_deployment(deployed, document, (*manifest.known, *args.known))
+        for line in (*report.problems, *report.warnings):
+            print(line)
+        if args.verbose:
+            for note in checked:
+                print(f"{params}: {note}")
+        if report.problems:
+            code = max(code, 1)
+    return code
+
+
+def _manifest(args: argparse.Namespace) -> Manifest | None:
+    entries: list[NodeEntry] = []
+    known: tuple[str, ...] = ()
+    if args.manifest is not None:
+        try:
+            manifest = read_manifest(args.manifest)
+        except SchemaError as exc:
+            print(exc, file=sys.stderr)
+            return None
+        except (OSError, UnicodeDecodeError) as exc:
+            print(
+                f"genparams check-deployment: cannot read {args.manifest}: {exc}", file=sys.stderr
+            )
+            return None
+        entries.extend(manifest.nodes)
+        known = manifest.known
+    for text in args.map:
+        try:
+            entries.append(parse_map(text))
+        except ValueError as exc:
+            print(f"genparams check-deployment: --map: {exc}", file=sys.stderr)
+            return None
+    if not entries:
+        print(
+            "genparams check-deployment: give --manifest FILE or --map NODE=SCHEMA", file=sys.stderr
+        )
+        return None
+    return Manifest(tuple(entries), known)
+
+
+def deployed_schemas(manifest: Manifest) -> list[Deployed] | None:
+    cache: dict[Path, Schema] = {}
+    deployed = []
+    for entry in manifest.nodes:
+        bounds = []
+        for ref in entry.schemas:
+            if ref.path not in cache:
+                schema = schema_or_none(ref.path)
+                if schema is None:
+                    return None
+                cache[ref.path] = schema
+            bounds.append(Bound(cache[ref.path], ref.prefix))
+        deployed.append(Deployed(entry, tuple(bounds)))
+    return deployed

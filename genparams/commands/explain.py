@@ -1,0 +1,99 @@
+"""genparams explain /NS/NODE [--schema S[@P]]... [--params-file F | -p RULE]... [--format yaml]"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+from typing import Any
+
+from genparams.commands._common import emit
+from genparams.commands._schemas import add_schema_arguments, load_bounds
+from genparams.commands.check_params import add_known_argument
+from genparams.outputs.explain_text import text_report, yaml_report
+from genparams.paramsfile.explain import RuleError, explain, overrides_document
+from genparams.paramsfile.manifest import read_manifest
+from genparams.paramsfile.params_reader import ParamsDocument, read_params_file
+from genparams.paramsfile.ros_yaml import absolute, node_matches, node_name_problem
+from genparams.schema.errors import SchemaError
+
+
+class _InOrder(argparse.Action):
+    """Keep --params-file and -p in one list, in command-line order, as rcl reads them."""
+
+    def __call__(
+        self, parser: argparse.ArgumentParser, ns: argparse.Namespace, value: Any, opt: Any = None
+    ) -> None:
+        getattr(ns, self.dest).append((self.const, value))
+
+
+def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    parser = subparsers.add_parser(
+        "explain",
+        help="a node's effective parameters, and where each came from",
+    )
+    parser.add_argument("node", metavar="/NS/NODE")
+    parser.add_argument(
+        "--params-file", dest="inputs", action=_InOrder, const="file", default=[], metavar="FILE"
+    )
+    parser.add_argument("-p", dest="inputs", action=_InOrder, const="rule", metavar="NAME:=VALUE")
+    add_schema_arguments(parser)
+    parser.add_argument(
+        "--manifest", type=Path, metavar="FILE", help="take the node's schemas here"
+    )
+    add_known_argument(parser)
+    parser.add_argument("--format", choices=("text", "yaml"), default="text")
+    parser.add_argument("-o", "--output", type=Path, metavar="FILE")
+    parser.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    problem = node_name_problem(args.node)
+    if problem is not None:
+        print(f"genparams explain: invalid node {args.node!r}: {problem}", file=sys.stderr)
+        return 2
+    node = absolute(args.node)
+    specs, known = list(args.also), list(args.known)
+    if args.manifest is not None:
+        try:
+            manifest = read_manifest(args.manifest)
+        except (SchemaError, OSError, UnicodeDecodeError) as exc:
+            print(f"genparams explain: {exc}", file=sys.stderr)
+            return 2
+        known += manifest.known
+        for entry in manifest.nodes:
+            if node_matches(entry.node, node):
+                specs += [(ref.path, ref.prefix) for ref in entry.schemas]
+                known += entry.known
+                break
+    bounds = load_bounds(specs)
+    if bounds is None:
+        return 2
+    documents = _documents(args.inputs)
+    if documents is None:
+        return 2
+    explanation = explain(bounds, documents, node, known)
+    text = yaml_report(explanation) if args.format == "yaml" else text_report(explanation)
+    emit(text, args.output)
+    return 1 if explanation.report.problems else 0
+
+
+def _documents(inputs: list[tuple[str, str]]) -> list[ParamsDocument] | None:
+    documents: list[ParamsDocument] = []
+    rules = 0
+    for kind, value in inputs:
+        if kind == "rule":
+            rules += 1
+            try:
+                documents.append(overrides_document([value], start=rules))
+            except RuleError as exc:
+                print(f"genparams explain: {exc}", file=sys.stderr)
+                return None
+            continue
+        try:
+            text = Path(value).read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError) as exc:
+            print(f"genparams explain: cannot read {value}: {exc}", file=sys.stderr)
+            return None
+        documents.append(read_params_file(text, value))
+    return documents
