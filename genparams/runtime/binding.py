@@ -76,7 +76,9 @@ class Binding(Generic[P]):
         compiled = compile_schema(spec)
         full = functools.partial(join_prefix, prefix)
 
-        reader = OverrideReader(node, full, old_names_by_current(compiled.aliases))
+        reader = OverrideReader(
+            node, full, old_names_by_current(compiled.aliases), adopted=compiled.adopted
+        )
         parameters, values, problems = resolve_all(compiled, reader.read, full)
         problems = reader.with_problems(problems)
         if problems:
