@@ -40,6 +40,7 @@ test: venv browser lint typecheck
 lint: venv
 	$(PYTHON) -m ruff check .
 	$(PYTHON) -m ruff format --check genparams tests examples bench
+	$(VENV)/bin/lint-imports
 
 typecheck: venv
 	$(PYTHON) -m mypy genparams bench

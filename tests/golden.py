@@ -1,7 +1,11 @@
 """Golden files: what each case folder expects, computed the one way tests compare it.
 
-Generated modules (tests/cases), other outputs (tests/output_cases), check-params
-reports (tests/check_params_cases) and CLI errors of bad schemas (tests/bad_schemas).
+One folder per schema under tests/cases holds its schema.yaml and every output of it:
+the generated module (expected_params.py), the docs pages (.md, .rst), the default
+params file (.params.yaml), the JSON Schema (.schema.json) and, under check_params/,
+one folder per params file with its check-params report. The example's schema.yaml
+is a link to examples/camera_node/camera_driver.yaml, whose docs pages are committed
+beside it. The CLI errors of bad schemas are a corpus of their own (tests/bad_schemas).
 """
 
 from __future__ import annotations
@@ -25,9 +29,9 @@ from genparams.outputs.render import render_docs, render_params_file
 TESTS = Path(__file__).resolve().parent
 ROOT = TESTS.parent
 EXAMPLE_SCHEMA = ROOT / "examples" / "camera_node" / "camera_driver.yaml"
-OUTPUT_CASES = TESTS / "output_cases"
-CHECK_PARAMS_CASES = TESTS / "check_params_cases"
 CASES = TESTS / "cases"
+OUTPUT_CASES = CASES  # every case folder holds the outputs of its schema
+CHECK_PARAMS = "check_params"  # in a case folder: one folder per checked params file
 BAD_SCHEMAS = TESTS / "bad_schemas"
 
 
@@ -40,7 +44,7 @@ class OutputCase:
 
     @property
     def name(self) -> str:
-        return self.folder.name if self.folder.parent == OUTPUT_CASES else "example"
+        return "example" if self.schema == EXAMPLE_SCHEMA else self.folder.name
 
     def golden(self, kind: str) -> Path:
         return self.folder / f"{load_schema(self.schema).name}{SUFFIXES[kind]}"
@@ -54,17 +58,34 @@ SUFFIXES = {
 }
 
 
-def output_cases() -> list[OutputCase]:
-    """The example (its docs are committed beside it) and every folder of tests/output_cases."""
+# The cases written to exercise docs, defaults and JSON Schema (each has a required
+# parameter, which the defaults file leaves out); the other cases' outputs are goldens too.
+OUTPUT_TEST_CASES = ("example", "mapped", "rules", "tricky")
+
+
+def all_output_cases() -> list[OutputCase]:
+    """The example (its docs are committed beside it), then every other case folder."""
     cases = [OutputCase(EXAMPLE_SCHEMA, EXAMPLE_SCHEMA.parent / "docs")]
-    for folder in sorted(OUTPUT_CASES.iterdir()):
-        if (folder / "schema.yaml").is_file():
-            cases.append(OutputCase(folder / "schema.yaml", folder))
+    for folder in case_dirs():
+        if case_schema(folder) != EXAMPLE_SCHEMA:
+            cases.append(OutputCase(case_schema(folder), folder))
     return cases
 
 
+def output_cases() -> list[OutputCase]:
+    return [case for case in all_output_cases() if case.name in OUTPUT_TEST_CASES]
+
+
+def runtime_cases() -> list[Path]:
+    """The case folders whose module the read-back test declares: no mapped groups (their
+    entries come from a for_each list), values for required parameters in overrides.yaml."""
+    return [case for case in case_dirs() if not load_schema(case_schema(case)).maps]
+
+
 def check_params_cases() -> list[Path]:
-    return sorted(p for p in CHECK_PARAMS_CASES.iterdir() if (p / "params.yaml").is_file())
+    """Every params file folder, of every case: ``tests/cases/<schema>/check_params/<case>``."""
+    folders = (params.parent for params in CASES.glob(f"*/{CHECK_PARAMS}/*/params.yaml"))
+    return sorted(folders, key=lambda folder: folder.name)
 
 
 def outputs(case: OutputCase) -> dict[str, str]:
@@ -85,8 +106,10 @@ def case_arguments(case: Path) -> list[str]:
 
 
 def case_schema(case: Path) -> Path:
-    own = case / "schema.yaml"
-    return own if own.is_file() else EXAMPLE_SCHEMA
+    """The schema of a case folder, or of the case folder a check_params folder lies in; the
+    example's link resolved, so outputs name camera_driver.yaml as its users see them."""
+    folder = case.parent.parent if case.parent.name == CHECK_PARAMS else case
+    return (folder / "schema.yaml").resolve()
 
 
 @contextlib.contextmanager
@@ -108,7 +131,7 @@ def check_params_output(case: Path) -> tuple[int, str]:
 
 
 def update() -> None:
-    for case in output_cases():
+    for case in all_output_cases():
         case.folder.mkdir(exist_ok=True)
         for kind, text in outputs(case).items():
             case.golden(kind).write_text(text, encoding="utf-8")
@@ -122,7 +145,7 @@ def case_dirs() -> list[Path]:
 
 
 def render_case(case: Path) -> str:
-    return genparams.generate(case / "schema.yaml")
+    return genparams.generate(case_schema(case))
 
 
 def bad_schemas() -> list[Path]:

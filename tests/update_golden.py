@@ -1,9 +1,9 @@
 """Rewrite the golden files after an intended change of output.
 
     python -m tests.update_golden           # every kind
-    python -m tests.update_golden cases     # tests/cases/*/expected_params.py
+    python -m tests.update_golden cases     # tests/cases/*/expected_params.py (modules)
     python -m tests.update_golden bad       # tests/bad_schemas/*.stderr
-    python -m tests.update_golden outputs   # docs, defaults, JSON Schema, check-params reports
+    python -m tests.update_golden outputs   # docs, defaults, JSON Schema, check_params/*
 
 Review the diff before committing: every changed line is a change users see.
 """

@@ -1,8 +1,8 @@
 """What a schema's documentation page says, decided here; the templates only write it out.
 
-Constraints are worded by the runtime's own validators (``describe()``), so the
-page states exactly the rules a node enforces. The "Default configuration"
-block is the default params file itself (see params_file).
+Constraints are worded by the runtime's own validators (``Parameter.constraints``),
+so the page states exactly the rules a node enforces, in every other output's words.
+The "Default configuration" block is the default params file itself (see params_file).
 """
 
 from __future__ import annotations
@@ -14,11 +14,8 @@ from dataclasses import dataclass
 from genparams import __version__
 from genparams.outputs.params_file import ParamsFile, default_params_file
 from genparams.outputs.yaml_text import value_text
-from genparams.runtime.lifecycle_text import CONFIGURE_ONLY_TEXT
 from genparams.runtime.naming import ENTRY_KEY
-from genparams.runtime.spec import CompiledParam
-from genparams.schema.model import Group, Parameter, Schema
-from genparams.schema.specs import compiled_param, compiled_params
+from genparams.schema.model import Group, OpenNamespace, Parameter, Schema
 
 FORMATS = ("markdown", "rst")
 
@@ -77,7 +74,6 @@ class DocsPage:
 
 
 def docs_page(schema: Schema) -> DocsPage:
-    compiled = compiled_params(schema)
     return DocsPage(
         title=schema.name,
         description=schema.description,
@@ -87,8 +83,11 @@ def docs_page(schema: Schema) -> DocsPage:
         version=__version__,
         namespaces=tuple(
             NamespaceDoc(
-                group.ros_name,
-                tuple(parameter_doc(p, compiled[p.ros_name]) for p in group.parameters),
+                group.spec_path if group.in_place else group.ros_name,
+                (
+                    *(parameter_doc(p) for p in group.parameters),
+                    *(_open_doc(n) for n in group.open_namespaces),
+                ),
                 _mapped_note(group),
             )
             for group in _documented_groups(schema.root)
@@ -105,7 +104,7 @@ def _one_line(check: str) -> str:
 
 def _documented_groups(group: Group) -> Iterator[Group]:
     """Groups holding parameters, each before its children, in schema order."""
-    if group.parameters:
+    if group.parameters or group.open_namespaces:
         yield group
     for child in group.groups:
         yield from _documented_groups(child)
@@ -119,19 +118,30 @@ def _mapped_note(group: Group) -> str:
     )
 
 
-def parameter_doc(parameter: Parameter, compiled: CompiledParam | None = None) -> ParameterDoc:
-    checks = (compiled or compiled_param(parameter)).checks
-    constraints = [check.describe() for check in checks]
-    if parameter.additional_constraints:
-        constraints.append(parameter.additional_constraints)
-    if parameter.configure_only:
-        constraints.append(CONFIGURE_ONLY_TEXT)
+def _open_doc(namespace: OpenNamespace) -> ParameterDoc:
+    """An open namespace, listed among the parameters: other code declares what it holds."""
+    owner = "Open namespace: other code of the node declares the parameters under it."
+    return ParameterDoc(
+        name=f"{namespace.ros_name}.*",
+        type_name="any",
+        default="",
+        unit="",
+        constraints=(),
+        description=f"{namespace.description} {owner}".strip(),
+        required=False,
+        read_only=False,
+        deprecated="",
+        old_names="",
+    )
+
+
+def parameter_doc(parameter: Parameter) -> ParameterDoc:
     return ParameterDoc(
         name=parameter.ros_name,
         type_name=parameter.type.name,
         default="" if parameter.required else value_text(parameter.default, parameter.type),
         unit=parameter.unit,
-        constraints=tuple(constraints),
+        constraints=parameter.constraints,
         description=parameter.description,
         required=parameter.required,
         read_only=parameter.read_only,

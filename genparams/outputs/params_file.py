@@ -123,7 +123,13 @@ def _group_entries(
     group: Group, indent: str, comments: bool, keys: dict[str, tuple[str, ...]]
 ) -> list[Entry]:
     entries = [_parameter_entry(p, indent, comments) for p in group.parameters]
+    for namespace in group.open_namespaces if comments else ():
+        why = (*comment_lines(namespace.description), "Open: other code declares what goes here.")
+        entries.append(Entry(indent, key_text(namespace.path[-1]), "", why, disabled=True))
     for child in group.groups:
+        if child.in_place:
+            entries.extend(_in_place_entries(child, indent, comments, keys))
+            continue
         name = key_text(child.path[-1])
         if not child.mapped_over:
             entries.append(Entry(indent, name, "", (), disabled=False))
@@ -140,6 +146,24 @@ def _group_entries(
         for item in items:
             entries.append(Entry(indent + _STEP, key_text(item), "", (), disabled=False))
             entries.extend(_group_entries(child, indent + _STEP * 2, comments, keys))
+    return entries
+
+
+def _in_place_entries(
+    group: Group, indent: str, comments: bool, keys: dict[str, tuple[str, ...]]
+) -> list[Entry]:
+    """Entries of a ``"*"`` group, one per default item, beside their namespace's names."""
+    items = keys.get(group.mapped_over, ())
+    if not items:
+        if not comments:
+            return []
+        why = f"Entries: one per item of {group.mapped_over}, which has no default items."
+        return [Entry(indent, key_text("<key>"), "", (why,), disabled=True)]
+    entries = []
+    for item in items:
+        note = (f"Entry of {group.mapped_over} item {item}.",) if comments else ()
+        entries.append(Entry(indent, key_text(item), "", note, disabled=False))
+        entries.extend(_group_entries(group, indent + _STEP, comments, keys))
     return entries
 
 
@@ -176,16 +200,10 @@ def _reads_back(parameter: Parameter) -> bool:
 
 def parameter_comment(parameter: Parameter) -> tuple[str, ...]:
     """Description, then unit, constraints, read-only and deprecation in one line."""
-    facts = []
-    if parameter.unit:
-        facts.append(f"Unit: {parameter.unit}.")
-    if parameter.all_constraints_text:
-        facts.append(f"Constraints: {parameter.all_constraints_text}.")
-    if parameter.read_only:
-        facts.append("Read-only.")
+    facts = [parameter.stated("unit", "constraints", "read_only")]
     if parameter.deprecated:
         facts.append(f"Deprecated: {parameter.deprecated}")
     lines = comment_lines(parameter.description)
-    if facts:
-        lines += comment_lines(" ".join(facts))
+    if any(facts):
+        lines += comment_lines(" ".join(f for f in facts if f))
     return lines

@@ -13,6 +13,7 @@ from genparams import __version__
 from genparams.outputs import markup
 from genparams.outputs.docs_model import DocsPage
 from genparams.outputs.params_file import ParamsFile
+from genparams.runtime import RUNTIME_API
 from genparams.schema.model import Schema
 from genparams.schema.resources import resource_dir
 
@@ -79,7 +80,7 @@ def _item_literal(item: Any, is_dict: bool, indent: int) -> str:
     if is_dict:
         key, value = item
         head = f"{python_literal(key)}: "
-        return head + wrapped_literal(value, indent, indent + len(head), 1)
+        return head + wrapped_literal(value, indent, indent + markup.column_width(head), 1)
     return wrapped_literal(item, indent, indent, 1)
 
 
@@ -92,7 +93,8 @@ def wrapped_literal(value: Any, indent: int, used: int, trailing: int) -> str:
     """
     flat = python_literal(value)
     container = _items(value)
-    if container is None or used + len(flat) + trailing <= LINE_LENGTH:
+    # ruff measures lines in columns: a wide character takes two, a combining mark none.
+    if container is None or used + markup.column_width(flat) + trailing <= LINE_LENGTH:
         return flat
     # A collection literal that does not fit gets one item per line (ruff, like black).
     opening, closing, items = container
@@ -100,6 +102,17 @@ def wrapped_literal(value: Any, indent: int, used: int, trailing: int) -> str:
     is_dict = opening == "{"
     lines = [f"{' ' * inner}{_item_literal(item, is_dict, inner)}," for item in items]
     return opening + "\n" + "\n".join(lines) + f"\n{' ' * indent}{closing}"
+
+
+# ruff splits a class header or an annotation too long for a line at brackets of its
+# choosing; a line only very long names make so long keeps its one-line form and
+# tells ruff so. Every other line is laid out here as ruff lays it out.
+_KEEP_AS_IS = "  # fmt: skip"
+
+
+def one_line(text: str, indent: int) -> str:
+    """``text`` at ``indent``, marked for ruff to leave alone when it is too long."""
+    return text + _KEEP_AS_IS if indent + markup.column_width(text) > LINE_LENGTH else text
 
 
 def keyword_argument(option: tuple[str, Any], indent: int) -> str:
@@ -127,6 +140,7 @@ def environment() -> jinja2.Environment:
     env.filters["py"] = python_literal
     env.filters["keyword_argument"] = keyword_argument
     env.filters["assignment"] = assignment
+    env.filters["one_line"] = one_line
     env.filters.update(
         md_text=markup.md_text,
         md_paragraphs=markup.md_paragraphs,
@@ -140,7 +154,7 @@ def environment() -> jinja2.Environment:
 
 def render_module(schema: Schema) -> str:
     template = environment().get_template("module.py.j2")
-    return template.render(schema=schema, version=__version__)
+    return template.render(schema=schema, version=__version__, runtime_api=RUNTIME_API)
 
 
 def render_params_file(params_file: ParamsFile) -> str:

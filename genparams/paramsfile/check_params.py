@@ -11,7 +11,6 @@ declared known (a framework's parameters, such as ros2_control's ``type``).
 from __future__ import annotations
 
 import dataclasses
-import difflib
 import fnmatch
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -21,6 +20,7 @@ from genparams.paramsfile.params_reader import ParamEntry, ParamsDocument, Secti
 from genparams.paramsfile.ros_yaml import ros_type_name
 from genparams.paramsfile.section_checker import SectionChecker
 from genparams.runtime.naming import join_prefix
+from genparams.runtime.suggest import did_you_mean_name
 from genparams.schema.errors import SchemaProblem
 from genparams.schema.model import Schema
 
@@ -198,13 +198,4 @@ def _shown(value: object) -> str:
 
 def suggestion(name: str, candidates: Sequence[str]) -> str:
     """`` (did you mean 'camera.fps'?)`` for a misspelt or misplaced name, else ""."""
-    last = name.rsplit(".", 1)[-1]
-    same_leaf = [c for c in candidates if c.rsplit(".", 1)[-1] == last]
-    if len(same_leaf) == 1:
-        return f" (did you mean {same_leaf[0]!r}?)"
-    close = difflib.get_close_matches(name, sorted(candidates), n=1, cutoff=0.6)
-    if not close:
-        leaves = {c.rsplit(".", 1)[-1]: c for c in sorted(candidates)}
-        near = difflib.get_close_matches(last, sorted(leaves), n=1, cutoff=0.75)
-        close = [leaves[near[0]]] if near else []
-    return f" (did you mean {close[0]!r}?)" if close else ""
+    return did_you_mean_name(name, candidates)

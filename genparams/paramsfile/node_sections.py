@@ -17,7 +17,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from genparams.paramsfile.params_reader import Section
-from genparams.paramsfile.ros_yaml import WILDCARD_ANY, WILDCARD_ONE, absolute, node_matches
+from genparams.paramsfile.ros_yaml import absolute, node_matches
+from genparams.runtime.naming import WILDCARD_ANY, WILDCARD_ONE
 
 
 @dataclass(frozen=True)

@@ -15,11 +15,14 @@ import math
 import re
 from dataclasses import dataclass
 
+# Node names and their wildcards are name rules: runtime.naming holds them.
+from genparams.runtime.naming import WILDCARD_ANY, WILDCARD_ONE
+from genparams.runtime.naming import absolute as absolute
+from genparams.runtime.naming import node_name_problem as node_name_problem
+from genparams.runtime.naming import node_pattern_problem as node_pattern_problem
+
 PARAMS_KEY = "ros__parameters"
 
-# Node names in params files: ROS prepends "/" when it is missing.
-WILDCARD_ONE = "*"  # exactly one name token
-WILDCARD_ANY = "**"  # zero or more name tokens
 
 _TRUE_WORDS = frozenset({"Y", "y", "yes", "Yes", "YES", "true", "True", "TRUE", "on", "On", "ON"})
 _FALSE_WORDS = frozenset(
@@ -142,43 +145,6 @@ def ros_type_name(value: ScalarValue) -> str:
 
 
 # ---- node names -----------------------------------------------------------------------
-
-_NAME_TOKEN = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
-
-
-def absolute(name: str) -> str:
-    return name if name.startswith("/") else "/" + name
-
-
-def node_pattern_problem(pattern: str) -> str | None:
-    """Why ROS refuses ``pattern`` as the node name of a params-file section, or None.
-
-    ``*`` stands for one name token and ``**`` for any number of them.
-    """
-    return _name_problem(absolute(pattern), wildcards=True)
-
-
-def node_name_problem(name: str) -> str | None:
-    """Why ``name`` is not a fully qualified node name such as ``/ns/camera``, or None."""
-    return _name_problem(absolute(name), wildcards=False)
-
-
-def _name_problem(name: str, *, wildcards: bool) -> str | None:
-    if name == "/":
-        return "node name must not be empty"
-    tokens = name[1:].split("/")
-    for index, token in enumerate(tokens):
-        last = index == len(tokens) - 1
-        if token == "":
-            return "node name must not be empty" if last else "contains repeated forward slash"
-        if wildcards and token in (WILDCARD_ONE, WILDCARD_ANY):
-            continue
-        if _NAME_TOKEN.fullmatch(token) is None:
-            what = "node name" if last else "namespace"
-            if token[0].isdigit():
-                return f"{what} must not start with a number: {token!r}"
-            return f"{what} {token!r} may hold only letters, digits and '_'"
-    return None
 
 
 def node_matches(pattern: str, node: str) -> bool:

@@ -11,7 +11,13 @@ from genparams.runtime.params import Params
 from genparams.runtime.spec import ParamSpec, RuleSpec, SchemaSpec
 from genparams.runtime.tree import Group, GroupMap
 
+# What a generated module may rely on: the names below and the fields of the specs.
+# Raise it on any change a module generated before could not run with; every
+# generated module checks it at import and asks to be regenerated on a mismatch.
+RUNTIME_API = 1
+
 __all__ = [
+    "RUNTIME_API",
     "Change",
     "Changes",
     "DetachedSnapshotError",

@@ -91,7 +91,9 @@ class Binding(Generic[P]):
                 ],
             )
 
-        reader = OverrideReader(node, full, old_names_by_current(compiled.aliases))
+        reader = OverrideReader(
+            node, full, old_names_by_current(compiled.aliases), adopted=compiled.adopted
+        )
         parameters, values, problems = resolve_all(compiled, reader.read, full)
         clashes = [
             f"{full(name)}: already declared on this node by {owner.schema_name}"

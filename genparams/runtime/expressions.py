@@ -21,89 +21,28 @@ Pure Python, shared by the code generator and the runtime.
 from __future__ import annotations
 
 import ast
-import difflib
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from genparams.runtime.naming import attribute_name
+from genparams.runtime.expression_words import (
+    ARITHMETIC,
+    ARRAYS,
+    EQUALITY,
+    FORBIDDEN,
+    FUNCTIONS,
+    KIND_OF_TYPE,
+    MEMBERSHIP,
+    ORDERING,
+    kind_words,
+)
+from genparams.runtime.naming import attribute_parts
+from genparams.runtime.suggest import did_you_mean
 
 MAX_CHECK_LENGTH = 2000
 
 Values = Mapping[str, Any]
 Evaluator = Callable[[Values], Any]
-
-# Typed-view kinds of the nine parameter types; "T[]" is an array of T.
-KIND_OF_TYPE = {
-    "bool": "bool",
-    "int": "number",
-    "double": "number",
-    "string": "string",
-    "byte_array": "bytes",
-    "bool_array": "bool[]",
-    "int_array": "number[]",
-    "double_array": "number[]",
-    "string_array": "string[]",
-}
-_KIND_WORDS = {
-    "bool": "true/false",
-    "number": "a number",
-    "string": "a string",
-    "bytes": "a byte array",
-}
-
-FUNCTIONS = ("abs", "len", "max", "min")
-
-_ARITHMETIC: dict[type[ast.operator], tuple[str, Callable[[Any, Any], Any]]] = {
-    ast.Add: ("+", lambda a, b: a + b),
-    ast.Sub: ("-", lambda a, b: a - b),
-    ast.Mult: ("*", lambda a, b: a * b),
-    ast.Div: ("/", lambda a, b: a / b),
-    ast.FloorDiv: ("//", lambda a, b: a // b),
-    ast.Mod: ("%", lambda a, b: a % b),
-}
-_ORDERING: dict[type[ast.cmpop], tuple[str, Callable[[Any, Any], bool]]] = {
-    ast.Lt: ("<", lambda a, b: a < b),
-    ast.LtE: ("<=", lambda a, b: a <= b),
-    ast.Gt: (">", lambda a, b: a > b),
-    ast.GtE: (">=", lambda a, b: a >= b),
-}
-_EQUALITY: dict[type[ast.cmpop], tuple[str, Callable[[Any, Any], bool]]] = {
-    ast.Eq: ("==", lambda a, b: a == b),
-    ast.NotEq: ("!=", lambda a, b: a != b),
-}
-_MEMBERSHIP: dict[type[ast.cmpop], tuple[str, Callable[[Any, Any], bool]]] = {
-    ast.In: ("in", lambda a, b: a in b),
-    ast.NotIn: ("not in", lambda a, b: a not in b),
-}
-# Readable names for constructs outside the language.
-_FORBIDDEN = {
-    ast.Pow: "the operator **",
-    ast.MatMult: "the operator @",
-    ast.BitAnd: "the operator &",
-    ast.BitOr: "the operator |",
-    ast.BitXor: "the operator ^",
-    ast.LShift: "the operator <<",
-    ast.RShift: "the operator >>",
-    ast.Invert: "the operator ~",
-    ast.Is: "'is' (use ==)",
-    ast.IsNot: "'is not' (use !=)",
-    ast.Subscript: "indexing",
-    ast.Lambda: "lambda",
-    ast.NamedExpr: "':='",
-    ast.JoinedStr: "f-strings",
-    ast.Dict: "dict literals",
-    ast.Set: "set literals",
-    ast.ListComp: "comprehensions",
-    ast.SetComp: "comprehensions",
-    ast.DictComp: "comprehensions",
-    ast.GeneratorExp: "comprehensions",
-    ast.Starred: "'*' unpacking",
-    ast.Await: "await",
-    ast.Yield: "yield",
-    ast.YieldFrom: "yield",
-    ast.Slice: "slices",
-}
 
 
 class RuleError(ValueError):
@@ -150,20 +89,13 @@ def compile_expression(text: str, parameter_types: Mapping[str, str]) -> Express
     return Expression(text, kind, tuple(compiler.used), evaluate)
 
 
-def kind_words(kind: str) -> str:
-    if kind.endswith("[]"):
-        return f"an array of {kind[:-2]}"
-    return _KIND_WORDS.get(kind, kind)
-
-
 class _Compiler:
     def __init__(self, text: str, shift: int, parameter_types: Mapping[str, str]) -> None:
         self.encoded = text.encode("utf-8")
         self.shift = shift
         # Expression spelling (attribute names joined by dots) -> ROS name.
         self.spellings = {
-            ".".join(attribute_name(part) for part in ros_name.split(".")): ros_name
-            for ros_name in parameter_types
+            ".".join(attribute_parts(ros_name)): ros_name for ros_name in parameter_types
         }
         self.kinds = {name: KIND_OF_TYPE[t] for name, t in parameter_types.items()}
         self.used: dict[str, None] = {}  # ordered set
@@ -192,7 +124,7 @@ class _Compiler:
         """The kind of ``node`` and a closure computing it; anything unlisted is refused."""
         handler = self.handlers.get(type(node))
         if handler is None:
-            what = _FORBIDDEN.get(type(node), type(node).__name__)
+            what = FORBIDDEN.get(type(node), type(node).__name__)
             raise self.error(node, f"rules cannot use {what}")
         return handler(node)
 
@@ -247,9 +179,7 @@ class _Compiler:
                 )
         if spelling in FUNCTIONS:
             return f"{spelling!r} is a function: call it, as in {spelling}(...)"
-        close = difflib.get_close_matches(spelling, sorted(self.spellings), n=1, cutoff=0.6)
-        hint = f" (did you mean {close[0]!r}?)" if close else ""
-        return f"unknown parameter {spelling!r}{hint}"
+        return f"unknown parameter {spelling!r}{did_you_mean(spelling, self.spellings)}"
 
     def sequence(self, node: ast.Tuple | ast.List) -> tuple[str, Evaluator]:
         items = [self.compile(item) for item in node.elts]
@@ -271,12 +201,12 @@ class _Compiler:
             if isinstance(node.op, ast.USub):
                 return "number", lambda values: -operand(values)
             return "number", operand
-        raise self.error(node, f"rules cannot use {_FORBIDDEN[type(node.op)]}")
+        raise self.error(node, f"rules cannot use {FORBIDDEN[type(node.op)]}")
 
     def arithmetic(self, node: ast.BinOp) -> tuple[str, Evaluator]:
-        entry = _ARITHMETIC.get(type(node.op))
+        entry = ARITHMETIC.get(type(node.op))
         if entry is None:
-            raise self.error(node, f"rules cannot use {_FORBIDDEN[type(node.op)]}")
+            raise self.error(node, f"rules cannot use {FORBIDDEN[type(node.op)]}")
         symbol, apply = entry
         left_kind, left = self.compile(node.left)
         right_kind, right = self.compile(node.right)
@@ -322,8 +252,8 @@ class _Compiler:
     def comparison(
         self, node: ast.expr, op: ast.cmpop, left: str, right: str
     ) -> Callable[[Any, Any], bool]:
-        if type(op) in _ORDERING:
-            symbol, apply = _ORDERING[type(op)]
+        if type(op) in ORDERING:
+            symbol, apply = ORDERING[type(op)]
             if left != right or left not in ("number", "string"):
                 raise self.error(
                     node,
@@ -331,8 +261,8 @@ class _Compiler:
                     f"not {kind_words(left)} and {kind_words(right)}",
                 )
             return apply
-        if type(op) in _EQUALITY:
-            symbol, apply = _EQUALITY[type(op)]
+        if type(op) in EQUALITY:
+            symbol, apply = EQUALITY[type(op)]
             if left != right:
                 raise self.error(
                     node,
@@ -340,8 +270,8 @@ class _Compiler:
                     f"not {kind_words(left)} and {kind_words(right)}",
                 )
             return apply
-        if type(op) in _MEMBERSHIP:
-            symbol, apply = _MEMBERSHIP[type(op)]
+        if type(op) in MEMBERSHIP:
+            symbol, apply = MEMBERSHIP[type(op)]
             if right != f"{left}[]" and not (left == right == "string"):
                 raise self.error(
                     node,
@@ -349,7 +279,7 @@ class _Compiler:
                     f"not {kind_words(left)} and {kind_words(right)}",
                 )
             return apply
-        raise self.error(node, f"rules cannot use {_FORBIDDEN[type(op)]}")
+        raise self.error(node, f"rules cannot use {FORBIDDEN[type(op)]}")
 
     def conditional(self, node: ast.IfExp) -> tuple[str, Evaluator]:
         test_kind, test = self.compile(node.test)
@@ -379,7 +309,7 @@ class _Compiler:
         if function == "abs" and kinds == ["number"]:
             (value,) = evaluators
             return "number", lambda values: abs(value(values))
-        if function == "len" and len(kinds) == 1 and kinds[0] in ("string", "bytes", *_ARRAYS):
+        if function == "len" and len(kinds) == 1 and kinds[0] in ("string", "bytes", *ARRAYS):
             (value,) = evaluators
             return "number", lambda values: len(value(values))
         if function in ("min", "max"):
@@ -401,6 +331,3 @@ class _Compiler:
     def expect(self, node: ast.expr, kind: str, wanted: str, used_by: str) -> None:
         if kind != wanted:
             raise self.error(node, f"{used_by} needs {kind_words(wanted)}, not {kind_words(kind)}")
-
-
-_ARRAYS = ("bool[]", "number[]", "string[]")

@@ -9,17 +9,24 @@ from collections.abc import Sequence
 # One token of a ROS parameter name. ROS also accepts a leading underscore;
 # genparams reserves those for the generated classes' internals.
 ROS_TOKEN = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
-SCHEMA_NAME = re.compile(r"[a-z][a-z0-9_]*")
+# Schema names and rule names: snake_case (schemas/genparams.schema.json states it too).
+SNAKE_CASE = re.compile(r"[a-z][a-z0-9_]*")
+SCHEMA_NAME = SNAKE_CASE
+RULE_NAME = SNAKE_CASE
 
 # Methods of the generated top-level class: a top-level parameter or namespace
-# with one of these names would hide them.
+# with one of these names gets an attribute with a trailing underscore.
 RESERVED_TOP_LEVEL = frozenset(
     {"declare", "defaults", "snapshot", "on_change", "to_dict", "remote", "changes"}
 )
 
 # Names the generated classes use inside their bodies (annotations, ClassVar): a
-# parameter or namespace of that name would hide them from type checkers.
+# parameter or namespace of that name gets an attribute with a trailing underscore.
 SHADOWING = frozenset({"bool", "bytes", "float", "int", "str", "tuple", "ClassVar"})
+
+# Parameters rclpy declares on every node: a schema may not declare them again
+# (it may adopt them, see ``adopt``).
+NODE_PARAMETERS = frozenset({"use_sim_time", "start_type_description_service"})
 
 
 def is_ros_token(name: str) -> bool:
@@ -34,12 +41,19 @@ def is_ros_name(name: str) -> bool:
 # In the names of a mapped group's parameters, this segment stands for one key.
 ENTRY_KEY = "*"
 
+# The slot of a generated group holding the entries of its in-place mapped group
+# (schema key "*"). Attributes never start with "_", so it hides no parameter.
+MAP_SLOT = "_map"
+
 # An item of a for_each key list becomes one segment of its entries' ROS names.
-# Params files, launch files and the parameter services carry any such segment,
-# so keys may be "left-arm" or "1st"; only rcl's `-p name:=value` parser wants
-# name tokens, so overrides for those entries come from params files.
-ENTRY_KEY_TEXT = re.compile(r"[A-Za-z0-9_-]+")
-ENTRY_KEY_RULE = "letters, digits, '_' and '-'"
+# rcl reads params files, and the parameter services carry names, segment by
+# segment with "." as the only separator, so a key may hold any other text:
+# "left-arm", "1st", "wheel_left/position". genparams refuses "." (it would
+# split the key), "*" (it stands for an entry in templates), and spaces and
+# control characters (no ROS tool can type them). rcl's `-p name:=value`
+# parser wants name tokens, so overrides for other keys come from params files.
+ENTRY_KEY_TEXT = re.compile(r"[^.*\s\x00-\x1f\x7f]+")
+ENTRY_KEY_RULE = "any text but '.', '*', spaces and control characters"
 
 
 def is_entry_key(key: str) -> bool:
@@ -62,11 +76,26 @@ def entry_key_problem(keys: Sequence[str], maps: str) -> str | None:
     return None
 
 
-def attribute_name(ros_token: str) -> str:
-    """Python attribute for a ROS name token: keywords get a trailing underscore (PEP 8)."""
-    if keyword.iskeyword(ros_token):
+def attribute_name(ros_token: str, *, top_level: bool = False) -> str:
+    """Python attribute for a ROS name token; the ROS name itself never changes.
+
+    A trailing underscore (PEP 8) is added to Python keywords (``from_``), to
+    names the generated class bodies use (``int_``), and at the top level to
+    the generated class's methods (``defaults_``, ``snapshot_``).
+    """
+    if (
+        keyword.iskeyword(ros_token)
+        or ros_token in SHADOWING
+        or (top_level and ros_token in RESERVED_TOP_LEVEL)
+    ):
         return ros_token + "_"
     return ros_token
+
+
+def attribute_parts(ros_name: str) -> tuple[str, ...]:
+    """The attribute path of a dotted ROS name (its first token is at the top level)."""
+    parts = ros_name.split(".")
+    return tuple(attribute_name(part, top_level=index == 0) for index, part in enumerate(parts))
 
 
 def pascal_case(name: str) -> str:
@@ -94,3 +123,45 @@ def strip_prefix(prefix: str, full_name: str) -> str | None:
         return full_name
     head = prefix + "."
     return full_name[len(head) :] if full_name.startswith(head) else None
+
+
+# Node names in params files and on the command line. A token of a node or namespace
+# name (rcl's rule): a letter or '_' first. ROS prepends "/" when it is missing.
+NODE_TOKEN = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+WILDCARD_ONE = "*"  # in a params-file section's node name: exactly one name token
+WILDCARD_ANY = "**"  # zero or more name tokens
+
+
+def absolute(name: str) -> str:
+    return name if name.startswith("/") else "/" + name
+
+
+def node_pattern_problem(pattern: str) -> str | None:
+    """Why ROS refuses ``pattern`` as the node name of a params-file section, or None.
+
+    ``*`` stands for one name token and ``**`` for any number of them.
+    """
+    return _name_problem(absolute(pattern), wildcards=True)
+
+
+def node_name_problem(name: str) -> str | None:
+    """Why ``name`` is not a fully qualified node name such as ``/ns/camera``, or None."""
+    return _name_problem(absolute(name), wildcards=False)
+
+
+def _name_problem(name: str, *, wildcards: bool) -> str | None:
+    if name == "/":
+        return "node name must not be empty"
+    tokens = name[1:].split("/")
+    for index, token in enumerate(tokens):
+        last = index == len(tokens) - 1
+        if token == "":
+            return "node name must not be empty" if last else "contains repeated forward slash"
+        if wildcards and token in (WILDCARD_ONE, WILDCARD_ANY):
+            continue
+        if NODE_TOKEN.fullmatch(token) is None:
+            what = "node name" if last else "namespace"
+            if token[0].isdigit():
+                return f"{what} must not start with a number: {token!r}"
+            return f"{what} {token!r} may hold only letters, digits and '_'"
+    return None

@@ -9,7 +9,6 @@ frozen values ``snapshot()`` returns on the node itself.
 
 from __future__ import annotations
 
-import difflib
 from collections.abc import Callable, Generator, Mapping
 from typing import TYPE_CHECKING, Any, Generic, TypeVar, cast
 
@@ -25,6 +24,7 @@ from genparams.runtime.errors import RemoteParameterError, RemoteSetError
 from genparams.runtime.naming import is_entry_key, join_prefix, strip_prefix
 from genparams.runtime.params import Params
 from genparams.runtime.spec import CompiledParam, compile_schema
+from genparams.runtime.suggest import did_you_mean
 from genparams.runtime.tree import build_tree
 from genparams.runtime.types import ValueTypeError
 
@@ -213,8 +213,7 @@ class RemoteParams(Generic[P]):
             param = self.parameter(name)
             if param is None:
                 known = sorted([*self.compiled.parameters, *self.compiled.templates])
-                close = difflib.get_close_matches(name, known, n=1)
-                hint = f" (did you mean {close[0]!r}?)" if close else ""
+                hint = did_you_mean(name, known)
                 reasons.append(f"{name}: no such parameter in {self.compiled.spec.name}{hint}")
                 continue
             reason = _check_one(param, value)

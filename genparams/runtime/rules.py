@@ -10,13 +10,8 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
 
-from genparams.runtime.expressions import (
-    Expression,
-    RuleError,
-    Values,
-    compile_expression,
-    kind_words,
-)
+from genparams.runtime.expression_words import kind_words
+from genparams.runtime.expressions import Expression, RuleError, Values, compile_expression
 
 __all__ = ["CompiledRule", "RuleError", "compile_rule", "rules_by_parameter"]
 

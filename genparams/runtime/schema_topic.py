@@ -65,8 +65,8 @@ def describe_parameter(param: CompiledParam, name: str) -> dict[str, Any]:
         "aliases": list(spec.aliases),
     }
     if spec.range is not None:
-        low, high, step = spec.range
-        described["range"] = {"min": low, "max": high, "step": step}
+        low, high, *step = spec.range
+        described["range"] = {"min": low, "max": high, "step": step[0] if step else 0}
     if ros_range is not None:
         described["ros_range"] = True
     return described

@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Callable, Collection, Iterable, Iterator, Mapping
 from typing import Any, ClassVar, TypeGuard, TypeVar, cast, final
 
-from genparams.runtime.naming import ENTRY_KEY, attribute_name
+from genparams.runtime.naming import ENTRY_KEY, MAP_SLOT, attribute_name
 from genparams.runtime.values import same_value
 
 _READ_ONLY = (
@@ -169,23 +169,35 @@ def build_tree(
     children: dict[str, list[str]] = {}
     for path in (*groups, *maps):
         parent, _, name = path.rpartition(".")
-        if name != ENTRY_KEY:
+        if name and name != ENTRY_KEY:
             children.setdefault(parent, []).append(name)
+
+    def entries(template: str, level: Mapping[str, Any]) -> GroupMap[Any]:
+        entry = f"{template}.{ENTRY_KEY}" if template else ENTRY_KEY
+        return GroupMap({k: make(groups[entry], entry, v) for k, v in level.items()})
 
     def make(cls: type[Group], template: str, level: dict[str, Any]) -> Group:
         for name in children.get(template, ()):
             level.setdefault(name, {})
         if cls not in _ROS_KEYS:
-            _ROS_KEYS[cls] = {attribute_name(key): key for key in level}
+            _ROS_KEYS[cls] = {attribute_name(key, top_level=not template): key for key in level}
         node = object.__new__(cls)
+        if template in maps and (template in groups or not template):
+            # An in-place map: the names that are not fields are its entries' keys.
+            fields = set(field_names(cls))
+            top = not template
+            keyed = {
+                k: v for k, v in level.items() if attribute_name(k, top_level=top) not in fields
+            }
+            level = {k: v for k, v in level.items() if k not in keyed}
+            object.__setattr__(node, MAP_SLOT, entries(template, keyed))
         for key, value in level.items():
             child = f"{template}.{key}" if template else key
-            if child in maps:
-                entry = f"{child}.{ENTRY_KEY}"
-                value = GroupMap({k: make(groups[entry], entry, v) for k, v in value.items()})
+            if child in maps and child not in groups:
+                value = entries(child, value)
             elif child in groups:
                 value = make(groups[child], child, value)
-            object.__setattr__(node, attribute_name(key), value)
+            object.__setattr__(node, attribute_name(key, top_level=not template), value)
         return node
 
     root = make(root_cls, "", nested)
@@ -281,20 +293,27 @@ def get_path(root: Group, path: tuple[str, ...]) -> Any:
     return node
 
 
-def to_dict(node: Group) -> dict[str, Any]:
+def to_dict(node: Group, *, top_level: bool = True) -> dict[str, Any]:
     """Nested dict keyed by ROS names (``from`` rather than the attribute ``from_``)."""
     out: dict[str, Any] = {}
     ros_keys = _ROS_KEYS.get(type(node), {})
     for attr in field_names(type(node)):
         value = getattr(node, attr)
-        key = ros_keys.get(attr) or _ros_key_guess(attr)
+        if attr == MAP_SLOT:  # in-place entries sit beside the fields, by key
+            out.update((k, to_dict(entry, top_level=False)) for k, entry in value.items())
+            continue
+        key = ros_keys.get(attr) or _ros_key_guess(attr, top_level=top_level)
         if isinstance(value, GroupMap):
-            out[key] = {k: to_dict(entry) for k, entry in value.items()}
+            out[key] = {k: to_dict(entry, top_level=False) for k, entry in value.items()}
+        elif isinstance(value, Group):
+            out[key] = to_dict(value, top_level=False)
         else:
-            out[key] = to_dict(value) if isinstance(value, Group) else value
+            out[key] = value
     return out
 
 
-def _ros_key_guess(attr: str) -> str:
-    """The ROS name of an attribute of a class no tree was built of: keywords lose the ``_``."""
-    return attr[:-1] if attr.endswith("_") and attribute_name(attr[:-1]) == attr else attr
+def _ros_key_guess(attr: str, *, top_level: bool) -> str:
+    """The ROS name of an attribute of a class no tree was built of: renamed ones lose the `_`."""
+    ros = attr[:-1]
+    renamed = attr.endswith("_") and attribute_name(ros, top_level=top_level) == attr
+    return ros if renamed else attr

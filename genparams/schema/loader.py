@@ -215,7 +215,6 @@ class _Builder:
     def __init__(self, document: LoadedDocument, scalar: ScalarReader | None) -> None:
         self.document = document
         self.problems: list[SchemaProblem] = []
-        self.nodes = 0
         self.constructor = yaml.constructor.SafeConstructor()
         self.scalar = scalar
 
@@ -223,17 +222,9 @@ class _Builder:
         return Location(self.document.file, node.start_mark.line + 1, node.start_mark.column + 1)
 
     def build(self, node: yaml.Node, path: Path) -> Any:
-        self.nodes += 1
-        if self.nodes > MAX_NODES:
-            raise SchemaError(
-                [
-                    SchemaProblem(
-                        self.location(node),
-                        dotted(path),
-                        f"document expands to more than {MAX_NODES} nodes (an alias bomb?)",
-                    )
-                ]
-            )
+        # No node count here: _check_expansion has bounded what aliases expand to. Depth
+        # is checked again: _check_nesting saw the text, where an alias of a deep
+        # collection placed deep adds the depths of both.
         if len(path) > MAX_DEPTH:
             raise SchemaError(
                 [

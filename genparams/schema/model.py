@@ -6,14 +6,14 @@ files see) and ``attribute`` / ``class_name`` (what Python code sees).
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
-from genparams.runtime.lifecycle_text import CONFIGURE_ONLY_TEXT
 from genparams.runtime.naming import ENTRY_KEY
+from genparams.runtime.spec import CompiledParam, EntryKeys, ParamSpec, compile_param
 from genparams.runtime.types import ParamType
-from genparams.runtime.validators import RosRange
 from genparams.schema.errors import Location
 
 
@@ -23,15 +23,15 @@ class RangeSpec:
     max: int | float
     step: int | float
 
-    def as_tuple(self) -> tuple[int | float, int | float, int | float]:
-        return (self.min, self.max, self.step)
+    def as_tuple(self) -> tuple[int | float, ...]:
+        """The runtime's ``range``: (min, max), with the step only when there is one."""
+        return (self.min, self.max, self.step) if self.step else (self.min, self.max)
 
 
 @dataclass(frozen=True)
 class ValidatorSpec:
     rule: str
     argument: Any  # JSON-like, lists made tuples
-    description: str  # plain words, e.g. "must be > 0"
 
     def as_tuple(self) -> tuple[str, Any]:
         return (self.rule, self.argument)
@@ -56,70 +56,67 @@ class Parameter:
     aliases: tuple[str, ...]  # old dotted names, relative to the prefix
     location: Location
     configure_only: bool = False  # lifecycle nodes: set only while unconfigured or inactive
+    adopt: bool = False  # other code may declare it first; genparams takes it over
+    # For a for_each parameter: the mapped groups its items name (their checks join its own).
+    keys_entries_of: str = ""
 
     @property
     def annotation(self) -> str:
         return self.type.annotation
 
-    @property
+    @functools.cached_property
     def docstring(self) -> str:
         """Hover text in IDEs: description, unit, default and constraints."""
-        lines = [self.description or self.ros_name]
-        facts = [f"Type: {self.type.name}."]
-        if self.unit:
-            facts.append(f"Unit: {self.unit}.")
-        facts.append("Required." if self.required else f"Default: {self.default!r}.")
-        if self.read_only:
-            facts.append("Read-only.")
-        if self.all_constraints_text:
-            facts.append(f"Constraints: {self.all_constraints_text}.")
-        if self.deprecated:
-            facts.append(f"Deprecated: {self.deprecated.rstrip('.')}.")
-        if self.aliases:
-            facts.append("Old names: " + ", ".join(self.aliases) + ".")
-        lines.append(" ".join(facts))
-        return "\n\n".join(lines)
+        default = "Required." if self.required else f"Default: {self.default!r}."
+        deprecated = f"Deprecated: {self.deprecated.rstrip('.')}." if self.deprecated else ""
+        facts = (
+            self.stated("type", "unit"),
+            default,
+            self.stated("read_only", "constraints"),
+            deprecated,
+            self.stated("old_names"),
+        )
+        return f"{self.description or self.ros_name}\n\n" + " ".join(f for f in facts if f)
+
+    def stated(self, *facts: str) -> str:
+        """The named facts in the words every output states them in (docstrings, comments
+        of default params files, JSON Schema hover text), those that apply, in order."""
+        words = self._fact_words
+        return " ".join(words[fact] for fact in facts if words[fact])
+
+    @functools.cached_property
+    def _fact_words(self) -> dict[str, str]:
+        return {
+            "type": f"Type: {self.type.name}.",
+            "unit": f"Unit: {self.unit}." if self.unit else "",
+            "read_only": "Read-only." if self.read_only else "",
+            "constraints": f"Constraints: {self.all_constraints_text}." if self.constraints else "",
+            "old_names": f"Old names: {', '.join(self.aliases)}." if self.aliases else "",
+        }
+
+    @functools.cached_property
+    def compiled(self) -> CompiledParam:
+        """This parameter compiled by the runtime, exactly as a node compiles it: its checks
+        judge values offline and word every constraint, so no output words one itself."""
+        extra = (EntryKeys(self.keys_entries_of),) if self.keys_entries_of else ()
+        return compile_param(self.runtime_spec, extra)
 
     @property
-    def range_text(self) -> str:
-        """The range in the runtime's words: "within [1.0, 120.0] in steps of 0.5"."""
-        if self.range is None:
-            return ""
-        return RosRange(
-            self.range.min,
-            self.range.max,
-            self.range.step,
-            integer=self.type.scalar_kind == "int",
-            each=self.type.is_array,
-        ).describe()
+    def runtime_spec(self) -> ParamSpec:
+        """The ``ParamSpec`` a generated module holds for this parameter."""
+        return ParamSpec(self.ros_name, self.type.name, **dict(self.spec_options))
 
-    @property
+    @functools.cached_property
+    def constraints(self) -> tuple[str, ...]:
+        """Every constraint in the runtime's words, the range included."""
+        return self.compiled.constraints
+
+    @functools.cached_property
     def all_constraints_text(self) -> str:
-        """Every constraint in plain words, the range included (for hover text and comments).
+        """Every constraint on one line (hover text, comments)."""
+        return "; ".join(self.constraints)
 
-        A scalar's range travels in the descriptor's range fields, so
-        ``constraints_text`` leaves it out; readers of docs need it all.
-        """
-        if self.range is None or self.type.is_array:
-            return self.constraints_text
-        return "; ".join(part for part in (self.range_text, self.constraints_text) if part)
-
-    @property
-    def constraints_text(self) -> str:
-        """Human-readable constraints, also sent as the descriptor's additional_constraints."""
-        parts = []
-        if self.range is not None and self.type.is_array:
-            parts.append(f"every item within [{self.range.min!r}, {self.range.max!r}]")
-        if self.choices is not None:
-            parts.append("one of " + ", ".join(repr(c) for c in self.choices))
-        parts.extend(v.description for v in self.validators)
-        if self.additional_constraints:
-            parts.append(self.additional_constraints)
-        if self.configure_only:
-            parts.append(CONFIGURE_ONLY_TEXT)
-        return "; ".join(parts)
-
-    @property
+    @functools.cached_property
     def spec_options(self) -> tuple[tuple[str, Any], ...]:
         """Keyword arguments of the runtime ParamSpec that differ from their defaults."""
         options: list[tuple[str, Any]] = []
@@ -138,6 +135,7 @@ class Parameter:
             ("deprecated", self.deprecated, ""),
             ("aliases", self.aliases, ()),
             ("configure_only", self.configure_only, False),
+            ("adopt", self.adopt, False),
         ):
             if value != empty:
                 options.append((key, value))
@@ -154,11 +152,28 @@ class Field:
 
 
 @dataclass(frozen=True)
+class OpenNamespace:
+    """A namespace whose parameters other code declares (a plugin, a filter chain).
+
+    genparams declares nothing under it; params files may set anything there,
+    and docs say who owns it.
+    """
+
+    ros_name: str  # dotted; holds ``*`` inside a mapped group
+    path: tuple[str, ...]
+    description: str
+    location: Location
+
+
+@dataclass(frozen=True)
 class Group:
     """A namespace; with ``mapped_over``, a mapped group: one entry per item of that parameter.
 
     Inside a mapped group, names hold ``*`` where an entry's key goes:
     the parameter ``p`` of the mapped group ``gains`` is ``gains.*.p``.
+    An ``in_place`` mapped group (schema key ``"*"``) adds no name of its own:
+    its entries sit in its parent namespace beside the parent's other names,
+    and Python reads them by key on the parent (``cfg.constraints["elbow"]``).
     """
 
     ros_name: str  # dotted namespace, "" for the top level
@@ -168,11 +183,18 @@ class Group:
     parameters: tuple[Parameter, ...]
     groups: tuple[Group, ...]
     mapped_over: str = ""  # ROS name of the string_array parameter whose items key the entries
+    open_namespaces: tuple[OpenNamespace, ...] = ()
+    in_place: bool = False  # a "*" group: path and ros_name are its parent's
+
+    @property
+    def entries_group(self) -> Group | None:
+        """The in-place mapped group whose entries this group holds by key, if any."""
+        return next((g for g in self.groups if g.in_place), None)
 
     @property
     def spec_path(self) -> str:
         """The runtime's key for this group's class: one entry's path for a mapped group."""
-        return f"{self.ros_name}.{ENTRY_KEY}" if self.mapped_over else self.ros_name
+        return ".".join((*self.path, ENTRY_KEY)) if self.mapped_over else self.ros_name
 
     @property
     def annotation(self) -> str:
@@ -188,18 +210,25 @@ class Group:
     @property
     def fields(self) -> tuple[Field, ...]:
         fields = [Field(p.attribute, p.annotation, p.docstring) for p in self.parameters]
-        fields.extend(Field(g.attribute, g.annotation, g.field_docstring) for g in self.groups)
+        fields.extend(
+            Field(g.attribute, g.annotation, g.field_docstring)
+            for g in self.groups
+            if not g.in_place
+        )
         return tuple(sorted(fields, key=lambda f: f.attribute))
 
     @property
     def docstring(self) -> str:
         if self.mapped_over:
-            return f"One entry of {self.ros_name}, for each item of {self.mapped_over}."
+            where = self.ros_name or "the top level"
+            return f"One entry of {where}, for each item of {self.mapped_over}."
         return f"Parameters under {self.ros_name}." if self.ros_name else ""
 
     @property
     def slots(self) -> tuple[str, ...]:
-        return tuple(f.attribute for f in self.fields)
+        """Field attributes; ``_map`` holds the entries of an in-place mapped group."""
+        names = tuple(f.attribute for f in self.fields)
+        return ("_map", *names) if self.entries_group is not None else names  # ruff's order
 
     def walk_groups(self) -> Iterator[Group]:
         """Every group below this one, children before parents (definition order)."""
@@ -211,6 +240,11 @@ class Group:
         yield from self.parameters
         for group in self.groups:
             yield from group.walk_parameters()
+
+    def walk_open_namespaces(self) -> Iterator[OpenNamespace]:
+        yield from self.open_namespaces
+        for group in self.groups:
+            yield from group.walk_open_namespaces()
 
 
 @dataclass(frozen=True)
@@ -248,6 +282,10 @@ class Schema:
         return tuple(sorted(self.root.walk_parameters(), key=lambda p: p.ros_name))
 
     @property
+    def open_namespaces(self) -> tuple[OpenNamespace, ...]:
+        return tuple(sorted(self.root.walk_open_namespaces(), key=lambda n: n.ros_name))
+
+    @property
     def docstring(self) -> str:
         """Module and class docstring. Stripped, because ruff format strips docstrings."""
         return self.description.strip() or f"Parameters of {self.name}."
@@ -262,5 +300,29 @@ class Schema:
         return bool(self.maps)
 
     @property
+    def uses_entries_by_key(self) -> bool:
+        """Whether a generated class reads in-place entries by key (``__getitem__``)."""
+        return any(g.entries_group is not None for g in (self.root, *self.nested_groups))
+
+    @property
     def class_names(self) -> tuple[str, ...]:
         return tuple(sorted([self.class_name, *(g.class_name for g in self.nested_groups)]))
+
+
+def with_entry_keys(root: Group) -> Group:
+    """``root`` with each for_each parameter told which mapped groups its items name."""
+    keyed: dict[str, list[str]] = {}
+    for group in root.walk_groups():  # the order the runtime compiles SchemaSpec.maps in
+        if group.mapped_over:
+            keyed.setdefault(group.mapped_over, []).append(group.ros_name)
+    if not keyed:
+        return root
+
+    def mark(group: Group) -> Group:
+        parameters = tuple(
+            replace(p, keys_entries_of=", ".join(keyed[p.ros_name])) if p.ros_name in keyed else p
+            for p in group.parameters
+        )
+        return replace(group, parameters=parameters, groups=tuple(map(mark, group.groups)))
+
+    return mark(root)

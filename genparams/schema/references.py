@@ -9,9 +9,9 @@ from collections.abc import Callable, Sequence
 from typing import Protocol
 
 from genparams.runtime import naming
+from genparams.runtime.suggest import did_you_mean
 from genparams.schema.loader import Path
 from genparams.schema.model import Group, Parameter
-from genparams.schema.schema_check import did_you_mean
 
 
 class Report(Protocol):

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import difflib
 import functools
 import json
 from collections.abc import Iterator
@@ -10,6 +9,7 @@ from typing import Any
 
 import jsonschema
 
+from genparams.runtime.suggest import did_you_mean
 from genparams.schema.errors import SchemaProblem
 from genparams.schema.loader import LoadedDocument, Path, dotted
 from genparams.schema.resources import resource_dir
@@ -19,11 +19,6 @@ from genparams.schema.resources import resource_dir
 def _validator() -> jsonschema.Draft202012Validator:
     schema = json.loads((resource_dir("schemas") / "genparams.schema.json").read_text("utf-8"))
     return jsonschema.Draft202012Validator(schema)
-
-
-def did_you_mean(word: str, options: Any) -> str:
-    close = difflib.get_close_matches(word, sorted(options), n=1, cutoff=0.6)
-    return f" (did you mean {close[0]!r}?)" if close else ""
 
 
 def check_document(document: LoadedDocument) -> list[SchemaProblem]:
@@ -99,7 +94,7 @@ def _problems(
 
 
 def _validator_message(instance: Any) -> str:
-    from genparams.runtime.validators import KINDS
+    from genparams.runtime.validator_kinds import KINDS
 
     if isinstance(instance, str) and instance in KINDS:
         return f"validator {instance!r} needs an argument: {{{instance}: ...}}"

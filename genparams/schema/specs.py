@@ -14,7 +14,6 @@ from genparams.runtime.spec import (
     ParamSpec,
     RuleSpec,
     SchemaSpec,
-    compile_param,
     compile_schema,
 )
 from genparams.schema.model import Parameter, Schema
@@ -22,11 +21,11 @@ from genparams.schema.model import Parameter, Schema
 
 def param_spec(parameter: Parameter) -> ParamSpec:
     """The ``ParamSpec`` a generated module holds for ``parameter``."""
-    return ParamSpec(parameter.ros_name, parameter.type.name, **dict(parameter.spec_options))
+    return parameter.runtime_spec
 
 
 def compiled_param(parameter: Parameter) -> CompiledParam:
-    return compile_param(param_spec(parameter))
+    return parameter.compiled
 
 
 def compiled_schema(schema: Schema) -> CompiledSchema:
@@ -45,5 +44,4 @@ def compiled_schema(schema: Schema) -> CompiledSchema:
 def compiled_params(schema: Schema) -> dict[str, CompiledParam]:
     """Every parameter and template by ROS name, with the checks a node runs on it (a
     for_each parameter's items must name entries, beyond its own validators)."""
-    compiled = compiled_schema(schema)
-    return {**compiled.parameters, **compiled.templates}
+    return {p.ros_name: p.compiled for p in schema.parameters}

@@ -11,9 +11,9 @@ from pathlib import Path
 import pytest
 
 from genparams.cli import main
-from tests.golden import EXAMPLE_SCHEMA, OutputCase, output_cases, outputs
+from tests.golden import EXAMPLE_SCHEMA, OutputCase, all_output_cases, outputs
 
-CASES = output_cases()
+CASES = all_output_cases()
 CASES_BY_NAME = {case.name: case for case in CASES}
 
 

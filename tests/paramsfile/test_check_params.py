@@ -1,6 +1,6 @@
 """genparams check-params on a corpus of params files, and a real node's verdict on each.
 
-Each folder of tests/check_params_cases holds a params file, the exact report
+Each folder tests/cases/<schema>/check_params/<case> holds a params file, the exact report
 (expected.txt), the node(s) it is checked for (args.txt) and what a real node
 does when started with it (ros.txt: "starts" or "refuses"). The offline check
 must never pass a file the node refuses.

@@ -13,9 +13,10 @@ import pytest
 import yaml
 from rclpy.parameter import Parameter
 
+from genparams.runtime.entries import expand
 from genparams.runtime.spec import compile_schema
 from genparams.runtime.types import TYPES
-from tests.golden import case_dirs
+from tests.golden import runtime_cases
 from tests.readback import mismatches, params_class, read_back
 from tests.support import RosHarness, import_file
 
@@ -27,7 +28,7 @@ def overrides(case: Path) -> dict[str, Any]:
     return data
 
 
-@pytest.mark.parametrize("case", case_dirs(), ids=lambda case: case.name)
+@pytest.mark.parametrize("case", runtime_cases(), ids=lambda case: case.name)
 def test_golden_module_declares_and_reads_back(ros: RosHarness, case: Path) -> None:
     cls = params_class(import_file(case / "expected_params.py"))
     compiled = compile_schema(cls._SPEC)
@@ -37,6 +38,8 @@ def test_golden_module_declares_and_reads_back(ros: RosHarness, case: Path) -> N
         param_type = TYPES[param.spec.type]
         source = given[name] if param.spec.required else param.spec.default
         expected[name] = param_type.coerce_default(source)
+    for name, entry in expand(compiled, expected).items():  # entries of mapped groups
+        expected[name] = TYPES[entry.spec.type].coerce_default(entry.spec.default)
     parameters = [
         Parameter(
             name,

@@ -1,0 +1,44 @@
+"""The one "did you mean" of genparams: schema keys, validator names, rule expressions,
+remote sets and params-file entries all suggest a name the same way."""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterable
+
+# difflib's similarity ratio a word must reach to be offered; 0.6 is difflib's default.
+CUTOFF = 0.6
+# A leaf name alone is short, so a near miss of it must be closer to be offered.
+LEAF_CUTOFF = 0.75
+
+
+def closest(word: str, options: Iterable[str], *, cutoff: float = CUTOFF) -> str | None:
+    """The option most like ``word``, or None when none is alike enough."""
+    close = difflib.get_close_matches(word, sorted(options), n=1, cutoff=cutoff)
+    return close[0] if close else None
+
+
+def hint(suggestion: str | None) -> str:
+    """`` (did you mean 'x'?)``, to append to a message, or ""."""
+    return f" (did you mean {suggestion!r}?)" if suggestion is not None else ""
+
+
+def did_you_mean(word: str, options: Iterable[str]) -> str:
+    return hint(closest(word, options))
+
+
+def did_you_mean_name(name: str, candidates: Iterable[str]) -> str:
+    """The hint for a misspelt or misplaced dotted name: the one name with the same last
+    segment (moved to another namespace), else the closest whole name, else the name whose
+    last segment is closest (misspelt deep in a namespace)."""
+    candidates = sorted(candidates)
+    last = name.rsplit(".", 1)[-1]
+    same_leaf = [c for c in candidates if c.rsplit(".", 1)[-1] == last]
+    if len(same_leaf) == 1:
+        return hint(same_leaf[0])
+    found = closest(name, candidates)
+    if found is None:
+        leaves = {c.rsplit(".", 1)[-1]: c for c in candidates}
+        near = closest(last, leaves, cutoff=LEAF_CUTOFF)
+        found = leaves[near] if near is not None else None
+    return hint(found)
