@@ -314,7 +314,7 @@ def with_entry_keys(root: Group) -> Group:
     keyed: dict[str, list[str]] = {}
     for group in root.walk_groups():  # the order the runtime compiles SchemaSpec.maps in
         if group.mapped_over:
-            keyed.setdefault(group.mapped_over, []).append(group.ros_name)
+            keyed.setdefault(group.mapped_over, []).append(group.ros_name or "the top level")
     if not keyed:
         return root
 
