@@ -161,7 +161,7 @@ class FeaturesParams(_Params):
     "int\n\nType: int. Default: 3."
 
     interfaces: tuple[str, ...]
-    "interfaces\n\nType: string_array. Default: ('wheel_left/position', 'wheel_right/position'). Constraints: each item names an entry of , weights.*: any text but '.', '*', spaces and control characters; no repeats."
+    "interfaces\n\nType: string_array. Default: ('wheel_left/position', 'wheel_right/position'). Constraints: each item names an entry of the top level, weights.*: any text but '.', '*', spaces and control characters; no repeats."
 
     joints: tuple[str, ...]
     "joints\n\nType: string_array. Default: ('shoulder', 'elbow'). Constraints: each item names an entry of constraints, weights: any text but '.', '*', spaces and control characters; no repeats."
