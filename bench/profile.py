@@ -26,10 +26,12 @@ from bench.workspace import Prepared, prepare
 
 # Functions whose cumulative time makes up one step, by (file suffix, function name).
 SET_STEPS: dict[str, tuple[tuple[str, str], ...]] = {
-    "genparams: serializing lock": (("consistency.py", "set_parameters_serialized"),),
+    "genparams: serializing lock and set frames": (("consistency.py", "set_serialized"),),
     "genparams: pre-set rewrites (empty arrays)": (("rewrites.py", "pre_set"),),
-    "genparams: on-set validation (types, validators, rules)": (("binding.py", "on_set"),),
-    "genparams: post-set commit to cfg": (("binding.py", "on_post_set"),),
+    "genparams: on-set validation (types, validators, rules)": (("consistency.py", "check"),),
+    "genparams: commit to cfg (before post-set callbacks)": (
+        ("consistency.py", "commit_then_post_set"),
+    ),
     "rclpy: range and type checks (_apply_descriptors)": (("node.py", "_apply_descriptors"),),
     "rclpy: parameter event publish": (("publisher.py", "publish"),),
     "rclpy: whole set_parameters": (("node.py", "set_parameters"),),

@@ -16,6 +16,7 @@ from genparams.commands import (
     docs,
     explain,
     generate,
+    import_gpl,
     json_schema,
     tune,
     validate,
@@ -32,6 +33,7 @@ COMMANDS = (
     explain,
     tune,
     audit,
+    import_gpl,
     cmake_dir,
 )
 

@@ -36,6 +36,7 @@ MUTMUT = [sys.executable, "-m", "mutmut"]
 # The modules whose every change of behaviour a test must catch, first.
 CORE = (
     "genparams.runtime.validators",
+    "genparams.runtime.validator_kinds",
     "genparams.runtime.binding",
     "genparams.runtime.spec",
     "genparams.runtime.entries",
@@ -92,6 +93,7 @@ def accepted() -> dict[str, str]:
 # kill them, and a survivor is judged mostly by them (see MAX_TESTS_PER_MUTANT).
 OWN_TESTS = {
     "genparams.runtime.validators": ("tests/runtime/test_validators.py", "tests/runtime/test_edge"),
+    "genparams.runtime.validator_kinds": ("tests/runtime/test_validators.py", "tests/schema/"),
     "genparams.runtime.binding": (
         "tests/runtime/test_commit_semantics.py",
         "tests/runtime/test_runtime_services.py",

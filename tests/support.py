@@ -5,6 +5,7 @@ from __future__ import annotations
 import importlib.util
 import itertools
 import sys
+import time
 import types
 from pathlib import Path
 from typing import Any
@@ -91,6 +92,18 @@ class ServiceClient:
             harness.executor.spin_once(timeout_sec=0.1)
         if not deadline_ok:
             raise TimeoutError(f"parameter services of {target} did not appear")
+        self._first_answer(target)
+
+    def _first_answer(self, target: str, timeout: float = 30.0) -> None:
+        """Wait until a call is answered. A service can be ready before its reply path
+        to this client is matched; a request sent then goes unanswered, so ask again."""
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            future = self.client.list_parameters([], 1)
+            self.harness.executor.spin_until_future_complete(future, timeout_sec=2.0)
+            if future.done():
+                return
+        raise TimeoutError(f"parameter services of {target} never answered")
 
     def get(self, *names: str) -> list[Any]:
         response = self.harness.wait(self.client.get_parameters(list(names)))

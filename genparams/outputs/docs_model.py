@@ -15,7 +15,7 @@ from genparams import __version__
 from genparams.outputs.params_file import ParamsFile, default_params_file
 from genparams.outputs.yaml_text import value_text
 from genparams.runtime.naming import ENTRY_KEY
-from genparams.schema.model import Group, Parameter, Schema
+from genparams.schema.model import Group, OpenNamespace, Parameter, Schema
 
 FORMATS = ("markdown", "rst")
 
@@ -83,8 +83,11 @@ def docs_page(schema: Schema) -> DocsPage:
         version=__version__,
         namespaces=tuple(
             NamespaceDoc(
-                group.ros_name,
-                tuple(parameter_doc(p) for p in group.parameters),
+                group.spec_path if group.in_place else group.ros_name,
+                (
+                    *(parameter_doc(p) for p in group.parameters),
+                    *(_open_doc(n) for n in group.open_namespaces),
+                ),
                 _mapped_note(group),
             )
             for group in _documented_groups(schema.root)
@@ -101,7 +104,7 @@ def _one_line(check: str) -> str:
 
 def _documented_groups(group: Group) -> Iterator[Group]:
     """Groups holding parameters, each before its children, in schema order."""
-    if group.parameters:
+    if group.parameters or group.open_namespaces:
         yield group
     for child in group.groups:
         yield from _documented_groups(child)
@@ -112,6 +115,23 @@ def _mapped_note(group: Group) -> str:
         return ""
     return (
         f"One entry per item of {group.mapped_over}; in the names below, {ENTRY_KEY} is the item."
+    )
+
+
+def _open_doc(namespace: OpenNamespace) -> ParameterDoc:
+    """An open namespace, listed among the parameters: other code declares what it holds."""
+    owner = "Open namespace: other code of the node declares the parameters under it."
+    return ParameterDoc(
+        name=f"{namespace.ros_name}.*",
+        type_name="any",
+        default="",
+        unit="",
+        constraints=(),
+        description=f"{namespace.description} {owner}".strip(),
+        required=False,
+        read_only=False,
+        deprecated="",
+        old_names="",
     )
 
 

@@ -12,14 +12,20 @@ Schema counts 30.0 as an integer: the description says it instead).
 from __future__ import annotations
 
 import math
-import re
 from collections.abc import Callable, Iterator
 from typing import Any
 
 from genparams.outputs.params_file import parameter_comment
+from genparams.outputs.schema_paths import (
+    ENTRY_KEY_PATTERN,
+    descendants,
+    dotted_pattern,
+    fixed_names,
+    open_descendants,
+)
 from genparams.outputs.yaml_text import value_text
 from genparams.paramsfile.ros_yaml import PARAMS_KEY
-from genparams.runtime.naming import ENTRY_KEY, ENTRY_KEY_TEXT, NODE_TOKEN
+from genparams.runtime.naming import ENTRY_KEY, NODE_TOKEN
 from genparams.runtime.spec import EntryKeys
 from genparams.runtime.validators import (
     Bounds,
@@ -38,7 +44,6 @@ from genparams.schema.model import Group, Parameter, Schema
 DRAFT = "https://json-schema.org/draft/2020-12/schema"
 _TOKEN = f"(\\*\\*|\\*|{NODE_TOKEN.pattern})"  # a node name token or a wildcard
 NODE_KEY_PATTERN = f"^/?{_TOKEN}(/{_TOKEN})*$"
-ENTRY_KEY_PATTERN = f"^{ENTRY_KEY_TEXT.pattern}$"  # the key of a mapped entry
 # Parameters every rclpy node declares itself; a params file may set them for any node.
 BUILTIN_PARAMETERS: dict[str, dict[str, Any]] = {
     "use_sim_time": {"type": "boolean", "description": "Use /clock for time (every ROS node)."},
@@ -65,7 +70,7 @@ def params_file_schema(schema: Schema, *, partial: bool = False) -> dict[str, An
     old_names = _OldNames(schema)
     for group in _all_groups(schema.root):
         definitions[_group_name(group)] = _group_schema(group, old_names, required=not partial)
-        if group.mapped_over:
+        if group.mapped_over and not group.in_place:
             definitions[_map_name(group)] = _map_schema(group)
     for parameter in schema.parameters:
         definitions[_parameter_name(parameter)] = parameter_schema(parameter)
@@ -87,6 +92,8 @@ def _all_groups(group: Group) -> Iterator[Group]:
 
 
 def _group_name(group: Group) -> str:
+    if group.in_place:  # shares its ros_name with the namespace it sits in
+        return f"group.{group.spec_path}"
     return f"group.{group.ros_name}" if group.ros_name else "group"
 
 
@@ -105,36 +112,14 @@ def _map_name(group: Group) -> str:
 def _map_schema(group: Group) -> dict[str, Any]:
     """A mapped group: entries keyed by items of its for_each parameter, nested or dotted."""
     patterns = {ENTRY_KEY_PATTERN: {"$ref": _group_ref(group)}}
-    for path, item in _descendants(group):
-        patterns[_dotted_pattern((ENTRY_KEY, *path))] = {"$ref": _ref(item, path)}
+    for path, item in descendants(group):
+        patterns[dotted_pattern((ENTRY_KEY, *path))] = {"$ref": _ref(item, path)}
     return {
         "type": "object",
         "description": f"One entry per item of {group.mapped_over}.",
         "patternProperties": patterns,
         "additionalProperties": False,
     }
-
-
-def _descendants(group: Group) -> Iterator[tuple[tuple[str, ...], Group | Parameter]]:
-    """Every parameter and group below ``group``, with its path relative to ``group``.
-
-    Below a mapped group, ``*`` holds the place of an entry's key.
-    """
-    for parameter in group.parameters:
-        yield (parameter.path[-1],), parameter
-    for child in group.groups:
-        yield (child.path[-1],), child
-        entry = (child.path[-1], ENTRY_KEY) if child.mapped_over else (child.path[-1],)
-        if child.mapped_over:
-            yield entry, child
-        for path, item in _descendants(child):
-            yield (*entry, *path), item
-
-
-def _dotted_pattern(path: tuple[str, ...]) -> str:
-    """A regex for the dotted key of ``path``, with any entry key where ``*`` stands."""
-    token = ENTRY_KEY_PATTERN[1:-1]
-    return "^" + "\\.".join(token if p == ENTRY_KEY else re.escape(p) for p in path) + "$"
 
 
 def _group_schema(group: Group, old_names: _OldNames, *, required: bool) -> dict[str, Any]:
@@ -145,11 +130,14 @@ def _group_schema(group: Group, old_names: _OldNames, *, required: bool) -> dict
         patterns["^qos_overrides\\."] = {}
     required_here: list[str] = []
     required_below: list[dict[str, Any]] = []
-    for path, item in _descendants(group):
+    beside = fixed_names(group)
+    if not group.ros_name and not group.in_place:
+        beside.update(BUILTIN_PARAMETERS, ["qos_overrides"])
+    for path, item in descendants(group):
         key = ".".join(path)
         ref = {"$ref": _ref(item, path)}
         if ENTRY_KEY in path:
-            patterns[_dotted_pattern(path)] = ref
+            patterns[dotted_pattern(path, beside)] = ref
             continue
         properties[key] = ref
         if isinstance(item, Group) or not (required and item.required):
@@ -161,6 +149,12 @@ def _group_schema(group: Group, old_names: _OldNames, *, required: bool) -> dict
             # own schema then requires the rest.
             prefixes = [".".join(path[:n]) for n in range(1, len(path) + 1)]
             required_below.append({"anyOf": [{"required": [prefix]} for prefix in prefixes]})
+    for path, namespace in open_descendants(group):
+        # Other code declares what lies here: any value, nested or dotted.
+        if ENTRY_KEY not in path:
+            properties[".".join(path)] = {"description": namespace.description or "Open namespace."}
+        patterns[dotted_pattern(path)] = {"description": namespace.description}
+        patterns[dotted_pattern(path)[:-1] + "\\."] = {}
     properties.update(old_names.properties(group))
     result: dict[str, Any] = {
         "type": "object",

@@ -123,7 +123,13 @@ def _group_entries(
     group: Group, indent: str, comments: bool, keys: dict[str, tuple[str, ...]]
 ) -> list[Entry]:
     entries = [_parameter_entry(p, indent, comments) for p in group.parameters]
+    for namespace in group.open_namespaces if comments else ():
+        why = (*comment_lines(namespace.description), "Open: other code declares what goes here.")
+        entries.append(Entry(indent, key_text(namespace.path[-1]), "", why, disabled=True))
     for child in group.groups:
+        if child.in_place:
+            entries.extend(_in_place_entries(child, indent, comments, keys))
+            continue
         name = key_text(child.path[-1])
         if not child.mapped_over:
             entries.append(Entry(indent, name, "", (), disabled=False))
@@ -140,6 +146,24 @@ def _group_entries(
         for item in items:
             entries.append(Entry(indent + _STEP, key_text(item), "", (), disabled=False))
             entries.extend(_group_entries(child, indent + _STEP * 2, comments, keys))
+    return entries
+
+
+def _in_place_entries(
+    group: Group, indent: str, comments: bool, keys: dict[str, tuple[str, ...]]
+) -> list[Entry]:
+    """Entries of a ``"*"`` group, one per default item, beside their namespace's names."""
+    items = keys.get(group.mapped_over, ())
+    if not items:
+        if not comments:
+            return []
+        why = f"Entries: one per item of {group.mapped_over}, which has no default items."
+        return [Entry(indent, key_text("<key>"), "", (why,), disabled=True)]
+    entries = []
+    for item in items:
+        note = (f"Entry of {group.mapped_over} item {item}.",) if comments else ()
+        entries.append(Entry(indent, key_text(item), "", note, disabled=False))
+        entries.extend(_group_entries(group, indent + _STEP, comments, keys))
     return entries
 
 

@@ -113,7 +113,7 @@ class SectionChecker:
             self.old_names[entry.name] = entry
             param = self.params[current]
         if param is None:
-            if not self.unmapped(entry):
+            if not self.in_open_namespace(entry) and not self.unmapped(entry):
                 self.unknown(entry)
             return
         if entry.name in self.deprecated:
@@ -138,6 +138,15 @@ class SectionChecker:
         reason = param.check(value)
         if reason is not None:
             self.problems.append(SchemaProblem(entry.value_location, entry.name, reason))
+
+    def in_open_namespace(self, entry: ParamEntry) -> bool:
+        """Under a namespace other code declares: not the schema's to check."""
+        parts = entry.name.split(".")
+        return any(
+            len(parts) > len(ns.path)
+            and all(t in (p, ENTRY_KEY) for p, t in zip(parts, ns.path, strict=False))
+            for ns in self.schema.open_namespaces
+        )
 
     def unmapped(self, entry: ParamEntry) -> bool:
         """An entry of a mapped group for a key the key list does not hold; False if none."""
@@ -196,7 +205,8 @@ class SectionChecker:
         }
         where = sections[-1].params_location if sections else Location(self.file, 1, 1)
         for name, param in self.params.items():
-            if param.spec.required and name not in given:
+            # An adopted parameter may get its value from the code that declares it first.
+            if param.spec.required and not param.spec.adopt and name not in given:
                 for_node = f" for {node}" if node else ""
                 self.problems.append(
                     SchemaProblem(

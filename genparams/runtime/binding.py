@@ -1,8 +1,9 @@
-"""The rclpy glue: declare with full descriptors, validate every set, commit after acceptance.
+"""The rclpy glue: declare with full descriptors, check every set, commit what the node stored.
 
-Values reach the typed view only from the post-set callback, which rclpy calls
-after every on-set callback accepted the change and the node stored it. A veto
-anywhere leaves the view untouched.
+The node's coordinator (``consistency.NodeSets``) calls ``check`` in the on-set
+round, after every other on-set callback, and ``commit`` once the node stored
+the values, before any post-set callback runs. A veto anywhere leaves the view
+untouched; a set nested in any callback is committed on its own.
 """
 
 from __future__ import annotations
@@ -14,29 +15,28 @@ import traceback
 from collections.abc import Callable, Iterable, Sequence
 from typing import Any, Generic, TypeVar
 
-from rcl_interfaces.msg import SetParametersResult
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
 from genparams.runtime.aliases import Aliases, old_names_by_current
 from genparams.runtime.changes import Change, Changes
-from genparams.runtime.consistency import parameter_set_lock
+from genparams.runtime.consistency import NodeSets, node_sets
 from genparams.runtime.declaring import declare_batch, descriptor_for, ros_parameter
 from genparams.runtime.deprecation import DeprecationWatch, Notices, report_overrides
 from genparams.runtime.entries import resolve_all
 from genparams.runtime.errors import ParameterDeclarationError
-from genparams.runtime.mapped import MappedEntries
+from genparams.runtime.lifecycle import mutability_problem
+from genparams.runtime.mapped import EntryPlan, MappedEntries
 from genparams.runtime.naming import is_ros_token, join_prefix
 from genparams.runtime.overrides import OverrideReader
 from genparams.runtime.params import Params
 from genparams.runtime.rewrites import add_rewrite, typed_empty_arrays
 from genparams.runtime.rule_check import broken_rules
 from genparams.runtime.spec import CompiledParam, compile_schema
-from genparams.runtime.tree import build_tree, copy_node, get_path, replace_values
+from genparams.runtime.tree import build_tree, copy_node, field_names, get_path, replace_values
+from genparams.runtime.values import same_value
 
 P = TypeVar("P", bound=Params)
-
-_ACCEPTED = SetParametersResult(successful=True)
 
 
 def check_prefix(prefix: str) -> str:
@@ -55,30 +55,55 @@ class Binding(Generic[P]):
         self.node = node
         self.prefix = prefix
         self.owned = owned  # full ROS name -> parameter
-        self.lock = threading.RLock()
+        self.old_names: frozenset[str] = frozenset()  # full old names (aliases)
+        self.lock = threading.Lock()  # guards the subscriber list
         self.subscribers: list[Callable[[Changes[P]], None]] = []
         self.current: P  # the frozen root: snapshots hand this out
         self.live: P  # the root users hold: top-level attributes follow `current`
         self.mapped: MappedEntries | None = None
         self.has_rules = False
-        # The last request on_set accepted, with its values converted: (request, values).
-        self.accepted: tuple[Sequence[Parameter], dict[CompiledParam, Any]] | None = None
+        self.has_configure_only = False
+        self.sets: NodeSets
+        self.schema_name = ""
 
     @classmethod
     def declare(cls, params_cls: type[P], node: Node, prefix: str = "") -> Binding[P]:
-        with parameter_set_lock(node):  # no set may run between declaring and validating
-            return cls._declare(params_cls, node, prefix)
+        sets = node_sets(node)
+        with sets.lock:  # no set may run between declaring and validating
+            binding = cls._declare(params_cls, node, check_prefix(prefix), sets)
+            sets.bindings.append(binding)
+            return binding
 
     @classmethod
-    def _declare(cls, params_cls: type[P], node: Node, prefix: str) -> Binding[P]:
-        prefix = check_prefix(prefix)
+    def _declare(cls, params_cls: type[P], node: Node, prefix: str, sets: NodeSets) -> Binding[P]:
         spec = params_cls._SPEC
         compiled = compile_schema(spec)
         full = functools.partial(join_prefix, prefix)
+        twice = [b for b in sets.bindings if type(b.live) is params_cls and b.prefix == prefix]
+        if twice:
+            where = f"prefix {prefix!r}" if prefix else "the root"
+            raise ParameterDeclarationError(
+                spec.name,
+                node.get_fully_qualified_name(),
+                [
+                    f"{params_cls.__name__} is already declared at {where}: declare a class once "
+                    "per prefix and share the view it returns"
+                ],
+            )
 
-        reader = OverrideReader(node, full, old_names_by_current(compiled.aliases))
+        reader = OverrideReader(
+            node, full, old_names_by_current(compiled.aliases), adopted=compiled.adopted
+        )
         parameters, values, problems = resolve_all(compiled, reader.read, full)
-        problems = reader.with_problems(problems)
+        clashes = [
+            f"{full(name)}: already declared on this node by {owner.schema_name}"
+            for name in parameters
+            if (owner := sets.owner_of(full(name))) is not None
+        ]
+        problems = [
+            *clashes,
+            *(p for p in reader.with_problems(problems) if not _names_clash(p, clashes)),
+        ]
         if problems:
             raise ParameterDeclarationError(spec.name, node.get_fully_qualified_name(), problems)
 
@@ -95,18 +120,21 @@ class Binding(Generic[P]):
         report_overrides(notices, parameters, reader.given, reader.renamed, full)
 
         binding: Binding[P] = cls(node, prefix, owned)
+        binding.sets = sets
+        binding.schema_name = params_cls.__name__
+        binding.old_names = frozenset(aliases.current_of)
         binding.has_rules = bool(compiled.rules)
+        every = (*compiled.parameters.values(), *compiled.templates.values())
+        binding.has_configure_only = any(p.spec.configure_only for p in every)
         binding.current = build_tree(
             params_cls, spec.groups, values, extra={"_binding": None}, maps=spec.maps
         )
         live = copy_node(binding.current)
         object.__setattr__(live, "_binding", binding)
         binding.live = live
-        if any(param.type.is_array for param in owned.values()):
+        if any(param.type.is_array for param in every):
             old_names = {old: owned[cur] for old, cur in aliases.current_of.items()}
             add_rewrite(node, typed_empty_arrays(collections.ChainMap(binding.owned, old_names)))
-        node.add_on_set_parameters_callback(binding.on_set)
-        node.add_post_set_parameters_callback(binding.on_post_set)
         # Mapped groups, old names and deprecations each watch the node on their own.
         binding.mapped = MappedEntries.attach(binding, compiled, parameters, notices)
         if compiled.aliases:
@@ -114,11 +142,18 @@ class Binding(Generic[P]):
         DeprecationWatch.attach(node, notices, binding.owned, compiled)
         return binding
 
-    def on_set(self, parameters: Sequence[Parameter]) -> SetParametersResult:
+    def declares(self, full_name: str) -> bool:
+        return full_name in self.owned or full_name in self.old_names
+
+    def check(
+        self, parameters: Sequence[Parameter], declaring: bool
+    ) -> dict[CompiledParam, Any] | list[str]:
+        """This class's part of a request, typed, or the reasons it is refused."""
         reasons = []
         typed: dict[CompiledParam, Any] = {}
+        owned = self.owned
         for parameter in parameters:
-            param = self.owned.get(parameter.name)
+            param = owned.get(parameter.name)
             if param is None:
                 continue
             if parameter.type_ == Parameter.Type.NOT_SET:
@@ -133,62 +168,95 @@ class Binding(Generic[P]):
             if reason is not None:
                 reasons.append(f"{parameter.name}: {reason}")
             typed[param] = value
-        if not reasons and typed and self.has_rules:
+        if self.mapped is not None and not reasons:
+            reasons.extend(self.mapped.check(parameters, typed, declaring))
+        if reasons:
+            return reasons
+        if not typed:
+            return typed
+        if self.has_configure_only and not declaring:
+            reasons = mutability_problem(self.node, typed, self.full_name)
+        if not reasons and self.has_rules:
             proposed = {param.name: value for param, value in typed.items()}
             reasons = broken_rules(self.current, proposed, self.full_name)
-        if reasons:
-            return SetParametersResult(successful=False, reason="; ".join(reasons))
-        # The post-set callback of this very request commits these values as converted
-        # here; holding the request keeps its identity from being reused by another.
-        self.accepted = (parameters, typed)
-        return _ACCEPTED
+        return reasons or typed
 
     def full_name(self, name: str) -> str:
         return join_prefix(self.prefix, name)
 
-    def on_post_set(self, parameters: Sequence[Parameter]) -> None:
-        accepted, self.accepted = self.accepted, None
-        if accepted is not None and accepted[0] is parameters:
-            updates = accepted[1]
-        else:  # a request this binding did not check (declarations of mapped entries)
-            updates = {}
-            for parameter in parameters:
-                param = self.owned.get(parameter.name)
-                if param is not None:
-                    updates[param] = param.type.from_ros(parameter.value)
-        if self.mapped is not None and self.mapped.changes_keys(updates):
-            self.mapped.reshape(updates)
-        elif updates:
-            self.commit(updates)
-
-    def commit(self, updates: dict[CompiledParam, Any]) -> None:
-        with self.lock:
-            before = self.current
-            # Change records are built only for subscribers: a set is on the hot path.
-            subscribed = bool(self.subscribers)
-            changed = []
-            paths = {}
-            for param, value in updates.items():
-                path = param.attribute_path
-                old = get_path(before, path)
-                if old != value:
-                    paths[path] = value
-                    if subscribed:
-                        changed.append(Change(param.name, old, value))
-            if not paths:
-                return
+    def commit(self, updates: dict[CompiledParam, Any]) -> bool:
+        """Commit values the node stored; False (nothing done) when they change mapped keys."""
+        mapped = self.mapped
+        if mapped is not None and mapped.changes_keys(updates):
+            return False
+        before = self.current
+        # Change records are built only for subscribers: a set is on the hot path.
+        subscribed = bool(self.subscribers)
+        changed = []
+        paths = {}
+        for param, value in updates.items():
+            path = param.attribute_path
+            old = get_path(before, path)
+            if old != value and not same_value(old, value):
+                paths[path] = value
+                if subscribed:
+                    changed.append(Change(param.name, old, value))
+        if paths:
             after = replace_values(before, paths, extra=("_binding",))
             self.publish(before, after, changed, {path[0] for path in paths})
+        return True
+
+    def reshape(self, updates: dict[CompiledParam, Any]) -> None:
+        """Commit a change of mapped keys: the entries' plan, applied in one place."""
+        mapped = self.mapped
+        plan = None if mapped is None else mapped.plan(self.current, updates)
+        if plan is None or not self.apply(plan):
+            # Only a concurrent declaration gets here (the on-set round checked the
+            # entries): the keys change, the entries keep their previous shape.
+            self.commit_values(updates)
+
+    def apply(self, plan: EntryPlan) -> bool:
+        """Declare and undeclare the plan's entries on the node, then commit its values."""
+        mapped = self.mapped
+        if mapped is None:
+            return False
+        full = self.full_name
+        owned = self.owned
+        # Removed entries leave the table first, so the check lets them go; added ones
+        # join after, so their declaration round does not commit them one by one.
+        dropped = {full(name): owned.pop(full(name)) for name in plan.undeclare}
+        if not mapped.replace_on_node(plan):
+            owned.update(dropped)
+            return False
+        owned.update((full(name), param) for name, param in plan.declare.items())
+        mapped.entries = plan.entries
+        spec = mapped.compiled.spec
+        before = self.current
+        after = build_tree(
+            type(before), spec.groups, plan.values, extra={"_binding": None}, maps=spec.maps
+        )
+        self.publish(before, after, plan.changed, field_names(type(after)))
+        return True
+
+    def commit_values(self, updates: dict[CompiledParam, Any]) -> None:
+        paths = {param.attribute_path: value for param, value in updates.items()}
+        before = self.current
+        after = replace_values(before, paths, extra=("_binding",))
+        changed = [
+            Change(p.name, get_path(before, p.attribute_path), v) for p, v in updates.items()
+        ]
+        self.publish(before, after, changed, {path[0] for path in paths})
 
     def publish(self, before: P, after: P, changed: list[Change], heads: Iterable[str]) -> None:
-        """Make ``after`` current (``heads``: the top-level attributes it replaced), notify."""
-        with self.lock:
-            self.current = after
-            for head in heads:
-                object.__setattr__(self.live, head, getattr(after, head))
-            if not self.subscribers:
-                return
-        self.notify(Changes(before, after, tuple(changed)))
+        """Make ``after`` current (``heads``: the top-level attributes it replaced); queue
+        the delivery to subscribers, made in the node's order of changes."""
+        self.current = after
+        for head in heads:
+            object.__setattr__(self.live, head, getattr(after, head))
+        if self.subscribers:
+            self.sets.deliver(
+                functools.partial(self.notify, Changes(before, after, tuple(changed)))
+            )
 
     def notify(self, changes: Changes[P]) -> None:
         for callback in tuple(self.subscribers):
@@ -209,3 +277,8 @@ class Binding(Generic[P]):
                     self.subscribers.remove(callback)
 
         return unsubscribe
+
+
+def _names_clash(problem: str, clashes: list[str]) -> bool:
+    """The reader's "declared by other code" for a name a clash already explains."""
+    return any(problem.split(":", 1)[0] == clash.split(":", 1)[0] for clash in clashes)

@@ -1,77 +1,191 @@
-"""One parameter change at a time per node: validation, storage and commit as one step.
+"""One commit discipline per node: sets serialized, validated last, committed once, in order.
 
-rclpy takes no lock around setting parameters. ``Node._set_parameters_atomically_common``
-runs every on-set callback (validation), stores the values, publishes the parameter
-event and then runs the post-set callbacks (where genparams commits to the typed view).
-Two threads (a MultiThreadedExecutor serving the parameter services, application
-threads calling ``set_parameters``) can both validate against the same state and then
-both store: each change alone keeps a rule such as ``min_speed <= max_speed``, the two
-together break it, and the view could commit them in another order than the node
-stored them.
+rclpy takes no lock around setting parameters, and its callbacks may set parameters
+themselves. ``Node._set_parameters_atomically_common`` runs every on-set callback
+(validation), stores the values, publishes the parameter event and then calls the
+post-set callbacks, newest first. Whatever a callback does, genparams keeps four promises:
 
-Three designs were weighed:
+- Sets on one node run one after the other. One re-entrant lock per node is taken
+  around the common set path and released in the same frame, so a veto, an
+  exception or a callback that sets parameters (same thread, re-entrant) can never
+  leave it held. Two threads can no longer both validate against the same state and
+  then both store a pair of values that breaks a rule together.
+- Validation sees the node's current state. genparams' check is one on-set callback
+  that runs after every other one (even ones added later): a set that another
+  on-set callback starts from inside the round has been stored and committed
+  before genparams checks the outer request.
+- Each accepted set is committed exactly once, with its own values, right after the
+  node stored them and before any post-set callback runs. Every set is one *frame*
+  on a stack: the check records its typed values in the frame, and the commit reads
+  them from the frame of the request being committed. A set nested in a post-set
+  callback or an ``on_change`` subscriber is a frame of its own, committed when the
+  node stores it, so the outer commit, which already happened, can never overwrite it.
+- ``on_change`` deliveries follow the node's order of changes. Commits append their
+  deliveries to one queue per node; the outermost set drains it before it returns,
+  and a set started by a subscriber appends behind the delivery being made.
 
-- Lock in the on-set callback, unlock in the post-set callback. rclpy runs the post-set
-  callbacks only when every on-set callback accepted. An on-set callback that runs after
-  ours (rclpy runs later-added callbacks first, so one added before ``declare``) and
-  vetoes means post-set never runs: the lock stays held and the next set deadlocks.
-- Validate optimistically and check again at commit. By then the node has stored the
-  values; a commit that finds a rule broken can no longer refuse them.
-- Serialize the whole call (chosen). ``_set_parameters_atomically_common`` is the one
-  path that every ``set_parameters``, ``set_parameters_atomically``, parameter service
-  request and declaration goes through. Each node gets one re-entrant lock around it,
-  taken and released in the same frame, so a veto, an exception or a callback that sets
-  parameters itself (same thread, re-entrant) can never leave it held.
-
-What follows from it:
-
-- Sets on one node run one after the other. They are short (callbacks, a dict update,
-  one publish); reads (``get_parameter``, the typed view, snapshots) never wait.
-- When a set returns, the node and every view agree; ``on_change`` subscribers run
-  inside the set, so they are called one at a time, in commit order. A subscriber may
-  set parameters itself, but must not wait for another thread that sets parameters on
-  the same node.
-- ``declare`` holds the lock from reading the overrides to registering its callbacks,
-  so no set can slip in between a parameter's declaration and its validation.
-- Holding ``parameter_set_lock(node)`` gives a moment where no change is in progress:
-  node values and views can be read together consistently.
+Hence: when the outermost set returns, every parameter a class owns equals its
+typed view, and each subscriber has seen every change, in order. Reads
+(``get_parameter``, the typed view, snapshots) never wait. ``declare`` holds the
+lock from reading the overrides to registering its class, so no set slips in
+between a parameter's declaration and its validation. Holding
+``parameter_set_lock(node)`` gives a moment where no change is in progress.
 """
 
 from __future__ import annotations
 
+import collections
 import threading
+from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
+
+from rcl_interfaces.msg import SetParametersResult
+from rclpy.exceptions import ParameterImmutableException
+from rclpy.parameter import Parameter
+
+from genparams.runtime import rclpy_internals as internals
 
 if TYPE_CHECKING:
     from rclpy.node import Node
 
-_ATTRIBUTE = "_genparams_set_lock"
+    from genparams.runtime.binding import Binding
+    from genparams.runtime.spec import CompiledParam
+
+_ATTRIBUTE = "_genparams_sets"
 _INSTALLING = threading.Lock()
+_ACCEPTED = SetParametersResult(successful=True)
+
+
+class UndeclareRefusedError(ParameterImmutableException):
+    """``node.undeclare_parameter`` of a parameter a genparams class declares.
+
+    A ParameterImmutableException, as rclpy raises for a read-only parameter, so
+    code that handles rclpy's refusal handles this one.
+    """
+
+    def __init__(self, name: str, schema: str) -> None:
+        Exception.__init__(
+            self,
+            f"{name}: cannot be undeclared: {schema} declares it and its typed view would "
+            "keep the value (parameter services refuse it the same way)",
+        )
+        self.name = name
+
+
+class Frame:
+    """One set in progress on the node: what genparams' check accepted, per binding."""
+
+    __slots__ = ("accepted", "declaring")
+
+    def __init__(self, declaring: bool) -> None:
+        self.declaring = declaring  # declarations and entry changes carry new descriptors
+        self.accepted: dict[Binding[Any], dict[CompiledParam, Any]] = {}
+
+
+Delivery = Callable[[], None]
+
+
+class NodeSets:
+    """The per-node coordinator: lock, frames, the bindings in declaration order, deliveries."""
+
+    def __init__(self, node: Node) -> None:
+        self.node = node
+        self.lock = threading.RLock()
+        self.bindings: list[Binding[Any]] = []
+        self.frames: list[Frame] = []
+        self.deliveries: collections.deque[Delivery] = collections.deque()
+        self.draining = False
+        self.unlocked_set = internals.set_path(node)
+        self.run_post_set = internals.post_set_caller(node)
+        self.undeclare = internals.replace_undeclare(node, self.undeclare_checked)
+        internals.replace_set_path(node, self.set_serialized)
+        internals.replace_post_set_caller(node, self.commit_then_post_set)
+        internals.add_last_on_set_callback(node, self.check)
+
+    # rclpy's own signature, spelled out: packing *args and **kwargs costs on every set.
+    def set_serialized(
+        self, parameter_list: Any, descriptors: Any = None, allow_not_set_type: bool = False
+    ) -> SetParametersResult:
+        with self.lock:
+            frames = self.frames
+            frames.append(Frame(descriptors is not None))
+            try:
+                result: SetParametersResult = self.unlocked_set(
+                    parameter_list, descriptors, allow_not_set_type
+                )
+            finally:
+                frames.pop()
+                if not frames and self.deliveries and not self.draining:
+                    self.drain()
+            return result
+
+    def check(self, parameters: Sequence[Parameter]) -> SetParametersResult:
+        """genparams' on-set callback, run after every other one: each class checks its part."""
+        frame = self.frames[-1]
+        reasons: list[str] = []
+        for binding in self.bindings:
+            outcome = binding.check(parameters, frame.declaring)
+            if isinstance(outcome, list):
+                reasons.extend(outcome)
+            elif outcome:
+                frame.accepted[binding] = outcome
+        if reasons:
+            return SetParametersResult(successful=False, reason="; ".join(reasons))
+        return _ACCEPTED
+
+    def commit_then_post_set(self, parameters: Sequence[Parameter]) -> None:
+        """The node stored ``parameters``: commit each class's part, then run post-set callbacks."""
+        accepted = self.frames[-1].accepted
+        if accepted:
+            reshaping = []
+            for binding, updates in accepted.items():
+                if not binding.commit(updates):
+                    reshaping.append((binding, updates))
+            # Entries are declared and undeclared in a set of their own, once every
+            # class holds what the node stored.
+            for binding, updates in reshaping:
+                binding.reshape(updates)
+        self.run_post_set(parameters)
+
+    def deliver(self, delivery: Delivery) -> None:
+        self.deliveries.append(delivery)
+
+    def drain(self) -> None:
+        self.draining = True
+        try:
+            while self.deliveries:
+                self.deliveries.popleft()()
+        finally:
+            self.draining = False
+
+    def owner_of(self, full_name: str) -> Binding[Any] | None:
+        for binding in self.bindings:
+            if binding.declares(full_name):
+                return binding
+        return None
+
+    def undeclare_checked(self, name: str) -> None:
+        """``node.undeclare_parameter``, refused for what a class declares, as the services are."""
+        with self.lock:
+            owner = self.owner_of(name)
+            if owner is not None:
+                raise UndeclareRefusedError(name, owner.schema_name)
+            self.undeclare(name)
+
+
+def node_sets(node: Node) -> NodeSets:
+    """The coordinator of ``node``; installed on first use."""
+    sets: NodeSets | None = getattr(node, _ATTRIBUTE, None)
+    if sets is not None:
+        return sets
+    with _INSTALLING:
+        sets = getattr(node, _ATTRIBUTE, None)
+        if sets is None:
+            sets = NodeSets(node)
+            setattr(node, _ATTRIBUTE, sets)
+    return sets
 
 
 def parameter_set_lock(node: Node) -> threading.RLock:
-    """The lock that serializes parameter changes on ``node``; installed on first use."""
-    lock: threading.RLock | None = getattr(node, _ATTRIBUTE, None)
-    if lock is not None:
-        return lock
-    with _INSTALLING:
-        lock = getattr(node, _ATTRIBUTE, None)
-        if lock is None:
-            lock = threading.RLock()
-            _serialize_sets(node, lock)
-            setattr(node, _ATTRIBUTE, lock)
-    return lock
-
-
-def _serialize_sets(node: Node, lock: threading.RLock) -> None:
-    unlocked = node._set_parameters_atomically_common
-
-    # rclpy's own signature, spelled out: packing *args and **kwargs costs on every set.
-    def set_parameters_serialized(
-        parameter_list: Any, descriptors: Any = None, allow_not_set_type: bool = False
-    ) -> Any:
-        with lock:
-            return unlocked(parameter_list, descriptors, allow_not_set_type)
-
-    # An instance attribute shadows the method for this node only.
-    node._set_parameters_atomically_common = set_parameters_serialized  # type: ignore[method-assign]
+    """The lock that serializes parameter changes on ``node``."""
+    return node_sets(node).lock

@@ -14,6 +14,7 @@ from rcl_interfaces.msg import (
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
+from genparams.runtime import rclpy_internals as internals
 from genparams.runtime.spec import CompiledParam
 
 
@@ -62,7 +63,7 @@ def declare_batch(node: Node, declarations: Sequence[Declaration]) -> None:
     empty list into BYTE_ARRAY; this path keeps the declared type.
     """
     parameters = [parameter for parameter, _ in declarations]
-    node._declare_parameter_common(parameters, {p.name: d for p, d in declarations})
+    internals.declare_with_descriptors(node, parameters, {p.name: d for p, d in declarations})
 
 
 def replace_batch(
@@ -79,4 +80,4 @@ def replace_batch(
     for name in removed:
         parameters.append(Parameter(name))
         descriptors[name] = ParameterDescriptor(name=name, dynamic_typing=True)
-    return node._set_parameters_atomically_common(parameters, descriptors)
+    return internals.set_with_descriptors(node, parameters, descriptors)

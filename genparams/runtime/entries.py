@@ -69,10 +69,24 @@ def expand(
     return entries
 
 
+def flatten(values: Mapping[str, Any], prefix: str = "") -> dict[str, Any]:
+    """Dotted names -> values from nested and dotted keys (no parameter value is a mapping)."""
+    out: dict[str, Any] = {}
+    for key, value in values.items():
+        name = f"{prefix}.{key}" if prefix else str(key)
+        if isinstance(value, Mapping):
+            out.update(flatten(value, name))
+        else:
+            out[name] = value
+    return out
+
+
 def resolve_all(
     compiled: CompiledSchema,
     read: Callable[[Iterable[str]], Mapping[str, Any]],
     full_name: Callable[[str], str] = lambda name: name,
+    source: str = "override",
+    lenient: bool = False,
 ) -> tuple[dict[str, CompiledParam], dict[str, Any], list[str]]:
     """Parameters (fixed ones, then entries) with their starting values, and every problem.
 
@@ -80,11 +94,13 @@ def resolve_all(
     they key are expanded. ``read`` gives the ROS-form values given for names.
     """
     parameters = dict(compiled.parameters)
-    values, problems = resolve_values(compiled, read(parameters), full_name)
+    values, problems = resolve_values(
+        compiled, read(parameters), full_name, source, lenient=lenient
+    )
     if compiled.templates:
         entries = expand(compiled, values)
         entry_values, entry_problems = resolve_values(
-            compiled, read(entries), full_name, parameters=entries
+            compiled, read(entries), full_name, source, parameters=entries, lenient=lenient
         )
         parameters.update(entries)
         values.update(entry_values)

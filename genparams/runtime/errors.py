@@ -8,11 +8,13 @@ from collections.abc import Sequence
 class ParameterDeclarationError(Exception):
     """A node's parameters cannot be declared: every problem is listed, nothing was declared."""
 
-    def __init__(self, schema: str, node: str, problems: Sequence[str]) -> None:
+    def __init__(
+        self, schema: str, node: str, problems: Sequence[str], doing: str = "declare"
+    ) -> None:
         self.problems = tuple(problems)
         count = len(self.problems)
         noun = "problem" if count == 1 else "problems"
-        lines = [f"{node}: cannot declare {schema} parameters ({count} {noun}):"]
+        lines = [f"{node}: cannot {doing} {schema} parameters ({count} {noun}):"]
         lines.extend(f"  - {p}" for p in self.problems)
         super().__init__("\n".join(lines))
 

@@ -36,7 +36,7 @@ from genparams.runtime.expression_words import (
     ORDERING,
     kind_words,
 )
-from genparams.runtime.naming import attribute_name
+from genparams.runtime.naming import attribute_parts
 from genparams.runtime.suggest import did_you_mean
 
 MAX_CHECK_LENGTH = 2000
@@ -95,8 +95,7 @@ class _Compiler:
         self.shift = shift
         # Expression spelling (attribute names joined by dots) -> ROS name.
         self.spellings = {
-            ".".join(attribute_name(part) for part in ros_name.split(".")): ros_name
-            for ros_name in parameter_types
+            ".".join(attribute_parts(ros_name)): ros_name for ros_name in parameter_types
         }
         self.kinds = {name: KIND_OF_TYPE[t] for name, t in parameter_types.items()}
         self.used: dict[str, None] = {}  # ordered set

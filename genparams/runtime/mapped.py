@@ -8,6 +8,10 @@ rejects the change), then declared, and the entries of removed items
 undeclared, from the post-set callback; the typed view moves to the new shape
 in one commit, so no snapshot ever sees keys and entries disagree.
 
+The work is split in two: ``plan`` computes what a change of keys does (the
+entries to declare and undeclare, every value after it, the changes), and the
+binding applies the plan in one place (``Binding.apply``).
+
 Two on-set checks keep node and view in step around that:
 
 - The new entries and the removals are shown to every other on-set callback of
@@ -24,11 +28,13 @@ from __future__ import annotations
 
 import functools
 from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from rcl_interfaces.msg import SetParametersResult
 from rclpy.parameter import Parameter
 
+from genparams.runtime import rclpy_internals as internals
 from genparams.runtime.changes import Change
 from genparams.runtime.declaring import descriptor_for, replace_batch, ros_parameter
 from genparams.runtime.deprecation import Notices
@@ -37,12 +43,24 @@ from genparams.runtime.naming import join_prefix, strip_prefix
 from genparams.runtime.overrides import OverrideReader
 from genparams.runtime.resolve import resolve_values
 from genparams.runtime.spec import CompiledParam, CompiledSchema
-from genparams.runtime.tree import build_tree, field_names, get_path
+from genparams.runtime.tree import get_path
 
 if TYPE_CHECKING:
     from genparams.runtime.binding import Binding
 
-_ACCEPTED = SetParametersResult(successful=True)
+
+@dataclass(frozen=True)
+class EntryPlan:
+    """What one change of keys does: entries in and out, every value after it, the changes."""
+
+    declare: Mapping[str, CompiledParam]  # relative name -> parameter of each new entry
+    declare_values: Mapping[str, Any]  # their starting values (override, else default)
+    undeclare: Sequence[str]  # relative names of the entries of removed keys
+    entries: dict[str, CompiledParam]  # the table of entries after the change
+    values: Mapping[str, Any]  # every parameter's value after the change, by relative name
+    changed: list[Change]
+    reader: OverrideReader  # releases what rclpy pre-declared from overrides
+    given: Sequence[str]  # new entries an override was given for (deprecation notices)
 
 
 class MappedEntries:
@@ -63,7 +81,6 @@ class MappedEntries:
         self.key_names = frozenset(compiled.maps.values())  # relative names of key parameters
         self.keys_by_full_name = {self.full_name(k): k for k in self.key_names}
         self.templates = tuple(compiled.templates)  # "gains.*.p"
-        self.replacing = False  # True while this binding declares and undeclares its entries
 
     @classmethod
     def attach(
@@ -76,38 +93,30 @@ class MappedEntries:
         if not compiled.maps:
             return None
         entries = {n: p for n, p in parameters.items() if n not in compiled.parameters}
-        mapped = cls(binding, compiled, entries, notices)
-        binding.node.add_on_set_parameters_callback(mapped.on_set)
-        return mapped
+        return cls(binding, compiled, entries, notices)
 
     def changes_keys(self, updates: Mapping[CompiledParam, Any]) -> bool:
         return any(param.name in self.key_names for param in updates)
 
-    def on_set(self, parameters: Sequence[Parameter]) -> SetParametersResult:
-        """Reject a change of keys whose new entries cannot be declared (bad override, ...)."""
-        if not self.replacing:
+    def check(
+        self,
+        parameters: Sequence[Parameter],
+        typed: Mapping[CompiledParam, Any],
+        declaring: bool,
+    ) -> list[str]:
+        """Refuse sets of undeclared entries, and changes of keys whose new entries cannot be
+        declared (bad override, refused by another on-set callback)."""
+        if not declaring:  # the entries' own declaration round declares them
             strays = [p.name for p in parameters if self.is_undeclared_entry(p.name)]
             if strays:
-                return SetParametersResult(
-                    successful=False,
-                    reason="; ".join(
-                        f"{name}: no such entry: its key is not in the key list" for name in strays
-                    ),
-                )
-        proposed: dict[str, Any] = {}
-        for parameter in parameters:
-            key_name = self.keys_by_full_name.get(parameter.name)
-            if key_name is None:
-                continue
-            param = self.compiled.parameters[key_name]
-            try:
-                keys = param.type.from_ros(parameter.value)
-            except ValueError:
-                continue  # the binding's own check names the problem
-            if param.check(keys) is None:
-                proposed[key_name] = keys
+                return [f"{name}: no such entry: its key is not in the key list" for name in strays]
+        proposed = {
+            param.name: value
+            for param, value in typed.items()
+            if param.name in self.key_names and param.check(value) is None
+        }
         if not proposed:
-            return _ACCEPTED
+            return []
         values = {
             name: get_path(self.binding.current, self.compiled.parameters[name].attribute_path)
             for name in self.key_names
@@ -122,17 +131,12 @@ class MappedEntries:
         problems = reader.with_problems(problems)
         changed = ", ".join(self.full_name(name) for name in proposed)
         if problems:
-            return SetParametersResult(
-                successful=False,
-                reason=f"{changed}: cannot declare the new entries: " + "; ".join(problems),
-            )
+            return [f"{changed}: cannot declare the new entries: " + "; ".join(problems)]
         removed = [name for name in self.entries if name not in expanded]
         refusal = self._refusal_of_others(added, new_values, removed)
         if refusal is None:
-            return _ACCEPTED
-        return SetParametersResult(
-            successful=False, reason=f"{changed}: the new entries were refused: {refusal}"
-        )
+            return []
+        return [f"{changed}: the new entries were refused: {refusal}"]
 
     def is_undeclared_entry(self, full_name: str) -> bool:
         """``full_name`` has the shape of an entry of this binding but is not declared."""
@@ -156,89 +160,65 @@ class MappedEntries:
         batch.extend(Parameter(self.full_name(name)) for name in removed)
         if not batch:
             return None
-        ours = (self.on_set, self.binding.on_set)  # they pass the round itself by design
-        for callback in tuple(node._on_set_parameters_callbacks):
-            if callback in ours:
+        ours = self.binding.sets.check  # genparams' own check passes the round by design
+        for callback in internals.on_set_callbacks(node):
+            if callback == ours:
                 continue
             result = callback(batch)
             if isinstance(result, SetParametersResult) and not result.successful:
                 return str(result.reason)
         return None
 
-    def reshape(self, updates: Mapping[CompiledParam, Any]) -> None:
-        """Commit a change of keys: declare new entries, undeclare removed ones, one commit."""
+    def plan(self, current: Any, updates: Mapping[CompiledParam, Any]) -> EntryPlan | None:
+        """The plan of a change of keys the node stored; None if its entries cannot be made."""
         binding = self.binding
-        with binding.lock:
-            before = binding.current
-            current = {p.name: get_path(before, p.attribute_path) for p in binding.owned.values()}
-            changed = []
-            for param, value in updates.items():
-                if current[param.name] != value:
-                    changed.append(Change(param.name, current[param.name], value))
-                    current[param.name] = value
-            fixed = {name: current[name] for name in self.compiled.parameters}
-            entries = expand(self.compiled, fixed, self.entries)
-            added = {n: p for n, p in entries.items() if n not in self.entries}
-            removed = [n for n in self.entries if n not in entries]
-            reader = OverrideReader(binding.node, self.full_name)
-            given = reader.read(added)
-            new_values, problems = resolve_values(
-                self.compiled, given, self.full_name, parameters=added
+        values = {p.name: get_path(current, p.attribute_path) for p in binding.owned.values()}
+        changed = []
+        for param, value in updates.items():
+            if values[param.name] != value:
+                changed.append(Change(param.name, values[param.name], value))
+                values[param.name] = value
+        fixed = {name: values[name] for name in self.compiled.parameters}
+        entries = expand(self.compiled, fixed, self.entries)
+        added = {n: p for n, p in entries.items() if n not in self.entries}
+        removed = [n for n in self.entries if n not in entries]
+        reader = OverrideReader(binding.node, self.full_name)
+        given = reader.read(added)
+        new_values, problems = resolve_values(
+            self.compiled, given, self.full_name, parameters=added
+        )
+        problems = reader.with_problems(problems)
+        if problems:
+            binding.node.get_logger().error(
+                "mapped entries keep their previous keys: " + "; ".join(problems)
             )
-            problems = reader.with_problems(problems)
-            if problems:
-                # The on-set round checked these: only a concurrent declaration gets here.
-                binding.node.get_logger().error(
-                    "mapped entries keep their previous keys: " + "; ".join(problems)
-                )
-            if problems or not self._replace_on_node(reader, added, new_values, removed):
-                binding.commit(dict(updates))
-                return
-            for name in given:
-                if added[name].spec.deprecated:
-                    self.notices.deprecated(self.full_name(name), added[name].spec.deprecated)
-            changed.extend(Change(name, current[name], None) for name in removed)
-            changed.extend(Change(name, None, new_values[name]) for name in added)
-            values = dict(fixed)
-            for name in entries:
-                values[name] = new_values[name] if name in added else current[name]
-            self.entries = entries
-            spec = self.compiled.spec
-            after = build_tree(
-                type(before), spec.groups, values, extra={"_binding": None}, maps=spec.maps
-            )
-            binding.publish(before, after, changed, field_names(type(after)))
+            return None
+        changed.extend(Change(name, values[name], None) for name in removed)
+        changed.extend(Change(name, None, new_values[name]) for name in added)
+        after = dict(fixed)
+        for name in entries:
+            after[name] = new_values[name] if name in added else values[name]
+        return EntryPlan(added, new_values, removed, entries, after, changed, reader, list(given))
 
-    def _replace_on_node(
-        self,
-        reader: OverrideReader,
-        added: Mapping[str, CompiledParam],
-        values: Mapping[str, Any],
-        removed: Sequence[str],
-    ) -> bool:
-        owned = self.binding.owned
-        # Removed entries leave the table first, so the binding's on-set check lets them go;
-        # added ones join after, so their declaration round does not commit them one by one.
-        dropped = {name: owned.pop(self.full_name(name)) for name in removed}
+    def replace_on_node(self, plan: EntryPlan) -> bool:
+        """Declare the plan's new entries and undeclare its removed ones, in one atomic change."""
         declarations = []
-        for name, param in added.items():
+        for name, param in plan.declare.items():
             full_name = self.full_name(name)
             declarations.append(
-                (ros_parameter(param, full_name, values[name]), descriptor_for(param, full_name))
+                (
+                    ros_parameter(param, full_name, plan.declare_values[name]),
+                    descriptor_for(param, full_name),
+                )
             )
-        reader.release_predeclared()
-        self.replacing = True
-        try:
-            result = replace_batch(
-                self.binding.node, declarations, [self.full_name(n) for n in removed]
-            )
-        finally:
-            self.replacing = False
+        plan.reader.release_predeclared()
+        result = replace_batch(
+            self.binding.node, declarations, [self.full_name(n) for n in plan.undeclare]
+        )
         if not result.successful:
-            for name, param in dropped.items():
-                owned[self.full_name(name)] = param
             self.binding.node.get_logger().error(f"cannot change mapped entries: {result.reason}")
             return False
-        for name, param in added.items():
-            owned[self.full_name(name)] = param
+        for name in plan.given:
+            if plan.declare[name].spec.deprecated:
+                self.notices.deprecated(self.full_name(name), plan.declare[name].spec.deprecated)
         return True

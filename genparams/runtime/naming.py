@@ -15,14 +15,18 @@ SCHEMA_NAME = SNAKE_CASE
 RULE_NAME = SNAKE_CASE
 
 # Methods of the generated top-level class: a top-level parameter or namespace
-# with one of these names would hide them.
+# with one of these names gets an attribute with a trailing underscore.
 RESERVED_TOP_LEVEL = frozenset(
     {"declare", "defaults", "snapshot", "on_change", "to_dict", "remote", "changes"}
 )
 
 # Names the generated classes use inside their bodies (annotations, ClassVar): a
-# parameter or namespace of that name would hide them from type checkers.
+# parameter or namespace of that name gets an attribute with a trailing underscore.
 SHADOWING = frozenset({"bool", "bytes", "float", "int", "str", "tuple", "ClassVar"})
+
+# Parameters rclpy declares on every node: a schema may not declare them again
+# (it may adopt them, see ``adopt``).
+NODE_PARAMETERS = frozenset({"use_sim_time", "start_type_description_service"})
 
 
 def is_ros_token(name: str) -> bool:
@@ -37,12 +41,19 @@ def is_ros_name(name: str) -> bool:
 # In the names of a mapped group's parameters, this segment stands for one key.
 ENTRY_KEY = "*"
 
+# The slot of a generated group holding the entries of its in-place mapped group
+# (schema key "*"). Attributes never start with "_", so it hides no parameter.
+MAP_SLOT = "_map"
+
 # An item of a for_each key list becomes one segment of its entries' ROS names.
-# Params files, launch files and the parameter services carry any such segment,
-# so keys may be "left-arm" or "1st"; only rcl's `-p name:=value` parser wants
-# name tokens, so overrides for those entries come from params files.
-ENTRY_KEY_TEXT = re.compile(r"[A-Za-z0-9_-]+")
-ENTRY_KEY_RULE = "letters, digits, '_' and '-'"
+# rcl reads params files, and the parameter services carry names, segment by
+# segment with "." as the only separator, so a key may hold any other text:
+# "left-arm", "1st", "wheel_left/position". genparams refuses "." (it would
+# split the key), "*" (it stands for an entry in templates), and spaces and
+# control characters (no ROS tool can type them). rcl's `-p name:=value`
+# parser wants name tokens, so overrides for other keys come from params files.
+ENTRY_KEY_TEXT = re.compile(r"[^.*\s\x00-\x1f\x7f]+")
+ENTRY_KEY_RULE = "any text but '.', '*', spaces and control characters"
 
 
 def is_entry_key(key: str) -> bool:
@@ -65,11 +76,26 @@ def entry_key_problem(keys: Sequence[str], maps: str) -> str | None:
     return None
 
 
-def attribute_name(ros_token: str) -> str:
-    """Python attribute for a ROS name token: keywords get a trailing underscore (PEP 8)."""
-    if keyword.iskeyword(ros_token):
+def attribute_name(ros_token: str, *, top_level: bool = False) -> str:
+    """Python attribute for a ROS name token; the ROS name itself never changes.
+
+    A trailing underscore (PEP 8) is added to Python keywords (``from_``), to
+    names the generated class bodies use (``int_``), and at the top level to
+    the generated class's methods (``defaults_``, ``snapshot_``).
+    """
+    if (
+        keyword.iskeyword(ros_token)
+        or ros_token in SHADOWING
+        or (top_level and ros_token in RESERVED_TOP_LEVEL)
+    ):
         return ros_token + "_"
     return ros_token
+
+
+def attribute_parts(ros_name: str) -> tuple[str, ...]:
+    """The attribute path of a dotted ROS name (its first token is at the top level)."""
+    parts = ros_name.split(".")
+    return tuple(attribute_name(part, top_level=index == 0) for index, part in enumerate(parts))
 
 
 def pascal_case(name: str) -> str:

@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Collection, Iterable, Mapping
 from typing import Any
 
 from rclpy.node import Node
 from rclpy.parameter import Parameter
+
+from genparams.runtime.rclpy_internals import parameter_overrides
 
 _MISSING = object()
 
@@ -18,6 +20,9 @@ class OverrideReader:
     Parameters the node already declared from overrides
     (``automatically_declare_parameters_from_overrides``) count as overrides and
     are listed in ``predeclared``, to be re-declared with their descriptors.
+    So are parameters the schema adopts (``adopt: true``) that other code of
+    the node declared first: their current value is read and checked like an
+    override, and genparams declares them again with its descriptor.
     """
 
     def __init__(
@@ -25,12 +30,14 @@ class OverrideReader:
         node: Node,
         full_name: Callable[[str], str],
         old_names: Mapping[str, tuple[str, ...]] | None = None,
+        adopted: Collection[str] = (),
     ) -> None:
         self.node = node
+        self.adopted = {full_name(name) for name in adopted}
         self.full_name = full_name
         self.old_names = old_names or {}
-        # rclpy exposes overrides only through this attribute.
-        self.overrides: dict[str, Parameter] = getattr(node, "_parameter_overrides", {})
+        # rclpy exposes overrides only through a private attribute.
+        self.overrides: dict[str, Parameter] = parameter_overrides(node)
         self.problems: list[str] = []
         self.predeclared: list[str] = []  # full names
         self.renamed: list[tuple[str, str]] = []  # (old full name, full name) an override used
@@ -63,7 +70,7 @@ class OverrideReader:
 
     def _value(self, full_name: str) -> Any:
         if self.node.has_parameter(full_name):
-            if full_name not in self.overrides:
+            if full_name not in self.overrides and full_name not in self.adopted:
                 self.problems.append(f"{full_name}: already declared on this node by other code")
                 self.taken.append(full_name)
                 return _MISSING

@@ -6,7 +6,7 @@ from collections.abc import Callable, Mapping
 from typing import TYPE_CHECKING, Any, ClassVar, Self
 
 from genparams.runtime.changes import Changes
-from genparams.runtime.entries import resolve_all
+from genparams.runtime.entries import flatten, resolve_all
 from genparams.runtime.errors import DetachedSnapshotError, ParameterDeclarationError
 from genparams.runtime.spec import SchemaSpec, compile_schema
 from genparams.runtime.tree import Group, build_tree, to_dict
@@ -23,6 +23,7 @@ class Params(Group):
 
     __slots__ = ("_binding",)
     _binding: Binding[Self] | None
+    _DETACHED = ("_binding",)  # a copy or an unpickled value is a snapshot
     _SPEC: ClassVar[SchemaSpec]
 
     @classmethod
@@ -57,17 +58,27 @@ class Params(Group):
 
     @classmethod
     def defaults(cls, overrides: Mapping[str, Any] | None = None) -> Self:
-        """A snapshot of the defaults (plus ``overrides`` by ROS name), without ROS."""
+        """A snapshot of the defaults plus ``overrides``, without ROS.
+
+        ``overrides`` maps ROS names to values, dotted (``{"camera.fps": 5.0}``),
+        nested as ``to_dict()`` returns them, or both. Values are typed as schema
+        defaults are: a double may be given as an int. An old name (alias)
+        stands for the current one, as it does in a params file.
+        """
         compiled = compile_schema(cls._SPEC)
-        # An old name (alias) stands for the current one, as it does in a params file.
-        given = {compiled.aliases.get(n, n): value for n, value in (overrides or {}).items()}
+        given = {compiled.aliases.get(n, n): v for n, v in flatten(overrides or {}).items()}
         parameters, values, problems = resolve_all(
-            compiled, lambda names: {n: given[n] for n in names if n in given}
+            compiled,
+            lambda names: {n: given[n] for n in names if n in given},
+            source="value",
+            lenient=True,
         )
         unknown = sorted(set(given) - set(parameters))
         problems.extend(f"{name}: no such parameter" for name in unknown)
         if problems:
-            raise ParameterDeclarationError(cls._SPEC.name, "defaults()", problems)
+            raise ParameterDeclarationError(
+                cls._SPEC.name, f"{cls.__name__}.defaults()", problems, doing="build"
+            )
         spec = cls._SPEC
         return build_tree(cls, spec.groups, values, extra={"_binding": None}, maps=spec.maps)
 

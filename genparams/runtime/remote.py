@@ -154,8 +154,9 @@ class RemoteParams(Generic[P]):
         )
 
     def parameter(self, name: str) -> CompiledParam | None:
-        """The fixed parameter ``name``, or the mapped entry it names (``gains.elbow.p``)."""
-        param = self.compiled.parameters.get(name)
+        """The fixed parameter ``name`` (or an old name of it), or the mapped entry it names
+        (``gains.elbow.p``)."""
+        param = self.compiled.parameters.get(self.compiled.aliases.get(name, name))
         if param is not None:
             return param
         for template in self.compiled.templates.values():
@@ -169,7 +170,9 @@ class RemoteParams(Generic[P]):
 
         A value the schema rejects fails the future at once, with nothing sent
         (``RemoteSetError.sent`` is False). A rejection by the node fails it with
-        the node's reason. Doubles may be given as ints, arrays as lists.
+        the node's reason (a ``configure_only`` parameter of an active lifecycle
+        node, a rule that reads values not being set). Doubles may be given as
+        ints, arrays as lists; an old name (alias) sets the current one.
         """
         result: TypedFuture[None] = TypedFuture()
         typed, reasons = self.check(values)
@@ -217,7 +220,7 @@ class RemoteParams(Generic[P]):
             if isinstance(reason, str):
                 reasons.append(f"{self.full_name(name)}: {reason}")
             else:
-                typed[name] = (param, reason[0])
+                typed[param.name] = (param, reason[0])
         if reasons:
             return typed, reasons
         proposed = {name: value for name, (_, value) in typed.items()}

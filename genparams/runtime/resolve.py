@@ -15,6 +15,7 @@ def resolve_values(
     full_name: Callable[[str], str] = lambda name: name,
     source: str = "override",
     parameters: Mapping[str, CompiledParam] | None = None,
+    lenient: bool = False,
 ) -> tuple[dict[str, Any], list[str]]:
     """Typed values for every parameter, and every problem found (all of them, not the first).
 
@@ -22,7 +23,8 @@ def resolve_values(
     breaks one is reported with the other problems.
 
     ``given`` maps relative names to values in ROS form (as rclpy holds them);
-    they are typed as strictly as ROS types them. ``parameters`` defaults to
+    they are typed as strictly as ROS types them (``lenient``: as schema defaults
+    are, a double may be an int). ``parameters`` defaults to
     the fixed parameters of ``compiled``.
     """
     values: dict[str, Any] = {}
@@ -33,7 +35,8 @@ def resolve_values(
         shown = full_name(name)
         if name in given:
             try:
-                value = param.type.from_ros(given[name])
+                raw = given[name]
+                value = param.type.coerce_default(raw) if lenient else param.type.from_ros(raw)
             except ValueTypeError as exc:
                 problems.append(f"{shown}: {source} has the wrong type: {exc}")
                 continue

@@ -2,14 +2,23 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, field
+from collections.abc import Collection, Iterable, Mapping
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
-from genparams.runtime.naming import ENTRY_KEY, ENTRY_KEY_RULE, attribute_name, entry_key_problem
+from genparams.runtime.lifecycle_text import CONFIGURE_ONLY_TEXT
+from genparams.runtime.naming import (
+    ENTRY_KEY,
+    ENTRY_KEY_RULE,
+    MAP_SLOT,
+    attribute_name,
+    attribute_parts,
+    entry_key_problem,
+)
 from genparams.runtime.rules import CompiledRule, RuleError, compile_rule, rules_by_parameter
 from genparams.runtime.types import TYPES, ParamType
-from genparams.runtime.validators import OneOf, RosRange, SubsetOf, Validator, build_validator
+from genparams.runtime.validator_kinds import build_validator
+from genparams.runtime.validators import OneOf, RosRange, SubsetOf, Validator
 
 if TYPE_CHECKING:
     from genparams.runtime.tree import Group
@@ -31,6 +40,8 @@ class ParamSpec:
     additional_constraints: str = ""
     deprecated: str = ""
     aliases: tuple[str, ...] = ()  # old dotted names, relative to the prefix
+    configure_only: bool = False  # lifecycle nodes: set only while unconfigured or inactive
+    adopt: bool = False  # declared first by other code of the node: taken over, not refused
 
 
 @dataclass(frozen=True)
@@ -62,10 +73,18 @@ class EntryKeys:
     """The items of a ``for_each`` parameter name mapped entries: distinct, of ENTRY_KEY_RULE."""
 
     maps: str  # the mapped groups it keys, for messages
+    # (in-place map, the names beside its entries): no key may repeat one of them
+    taken: tuple[tuple[str, frozenset[str]], ...] = ()
     rule: str = "for_each"
 
     def __call__(self, value: Any) -> str | None:
         reason = entry_key_problem(value, self.maps)
+        for map_path, names in self.taken if reason is None else ():
+            clash = next((key for key in value if key in names), None)
+            if clash is not None:
+                where = map_path or "the top level"
+                reason = f"item {clash!r} is already a name in {where}: an entry cannot share it"
+                break
         return None if reason is None else f"{reason} ({self.rule})"
 
     def describe(self) -> str:
@@ -110,6 +129,8 @@ class CompiledParam:
         parts = [check.describe() for check in self.checks]
         if self.spec.additional_constraints:
             parts.append(self.spec.additional_constraints)
+        if self.spec.configure_only:
+            parts.append(CONFIGURE_ONLY_TEXT)
         return tuple(parts)
 
     @property
@@ -150,7 +171,7 @@ def compile_param(spec: ParamSpec, extra_checks: tuple[Validator, ...] = ()) -> 
     return CompiledParam(
         spec=spec,
         type=param_type,
-        attribute_path=tuple(map(attribute_name, spec.name.split("."))),
+        attribute_path=attribute_parts(spec.name),
         checks=tuple(checks),
     )
 
@@ -163,6 +184,11 @@ class CompiledSchema:
     aliases: Mapping[str, str] = field(default_factory=dict)  # old name -> current name
     rules: tuple[CompiledRule, ...] = ()
     rules_by_parameter: Mapping[str, tuple[CompiledRule, ...]] = field(default_factory=dict)
+
+    @property
+    def adopted(self) -> frozenset[str]:
+        """Names other code of the node may declare first (``adopt: true``)."""
+        return frozenset(name for name, p in self.parameters.items() if p.spec.adopt)
 
     @property
     def maps(self) -> Mapping[str, str]:
@@ -200,17 +226,55 @@ def compile_schema(spec: SchemaSpec) -> CompiledSchema:
     return compiled
 
 
+def in_place_maps(spec: SchemaSpec) -> frozenset[str]:
+    """Maps whose entries sit beside other names of their namespace (schema key ``"*"``).
+
+    Their namespace is a group of its own (or the top level), so Python reads
+    the entries by key on it, through its ``_map`` slot.
+    """
+    return frozenset(path for path in spec.maps if path == "" or path in spec.groups)
+
+
+def attribute_path(name: str, in_place: Collection[str]) -> tuple[str, ...]:
+    """Python path of a ROS name: keywords spelled ``from_``; ``_map`` before in-place keys."""
+    parts = name.split(".")
+    path: list[str] = []
+    for index, part in enumerate(parts):
+        if part == ENTRY_KEY and ".".join(parts[:index]) in in_place:
+            path.append(MAP_SLOT)
+        path.append(attribute_name(part, top_level=index == 0))
+    return tuple(path)
+
+
+def _names_beside(spec: SchemaSpec, map_path: str) -> frozenset[str]:
+    """The fixed names directly in an in-place map's namespace."""
+    depth = len(map_path.split(".")) if map_path else 0
+    names = set()
+    for name in (*(p.name for p in spec.parameters), *spec.groups):
+        parts = name.split(".")
+        inside = ".".join(parts[:depth]) == map_path and len(parts) > depth
+        if inside and parts[depth] != ENTRY_KEY:
+            names.add(parts[depth])
+    return frozenset(names)
+
+
 def _compile(spec: SchemaSpec) -> CompiledSchema:
     keyed: dict[str, list[str]] = {}
     for map_path, key_name in spec.maps.items():
         keyed.setdefault(key_name, []).append(map_path)
+    in_place = in_place_maps(spec)
     parameters: dict[str, CompiledParam] = {}
     templates: dict[str, CompiledParam] = {}
     aliases: dict[str, str] = {}
     for param_spec in spec.parameters:
         maps = keyed.get(param_spec.name)
-        extra = (EntryKeys(", ".join(maps)),) if maps else ()
+        extra: tuple[Validator, ...] = ()
+        if maps:
+            taken = tuple((m, _names_beside(spec, m)) for m in maps if m in in_place)
+            extra = (EntryKeys(", ".join(m or "the top level" for m in maps), taken),)
         compiled = compile_param(param_spec, extra)
+        if in_place:
+            compiled = replace(compiled, attribute_path=attribute_path(param_spec.name, in_place))
         is_template = ENTRY_KEY in param_spec.name.split(".")
         (templates if is_template else parameters)[param_spec.name] = compiled
         aliases.update(dict.fromkeys(param_spec.aliases, param_spec.name))

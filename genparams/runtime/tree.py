@@ -8,9 +8,10 @@ shared mutable state) and one set costs O(depth x group width), not O(N).
 from __future__ import annotations
 
 from collections.abc import Callable, Collection, Iterable, Iterator, Mapping
-from typing import Any, TypeGuard, TypeVar, cast, final
+from typing import Any, ClassVar, TypeGuard, TypeVar, cast, final
 
-from genparams.runtime.naming import ENTRY_KEY, attribute_name
+from genparams.runtime.naming import ENTRY_KEY, MAP_SLOT, attribute_name
+from genparams.runtime.values import same_value
 
 _READ_ONLY = (
     "{cls}.{name} is read-only: change parameters through the node "
@@ -19,9 +20,30 @@ _READ_ONLY = (
 
 
 class Group:
-    """Base of every generated class. Instances are read-only values."""
+    """Base of every generated class. Instances are read-only values.
+
+    Like a tuple or a frozen dataclass they copy and pickle: a copy of a frozen
+    value is the value itself, and pickling records the field values (the
+    class must be importable, as any pickled class must).
+    """
 
     __slots__ = ()
+    _DETACHED: ClassVar[tuple[str, ...]] = ()  # non-field slots, None in copies
+
+    def __copy__(self) -> Group:
+        return self if self._is_frozen() else _rebuild(type(self), self._field_values())
+
+    def __deepcopy__(self, memo: dict[int, Any]) -> Group:
+        return self.__copy__()  # every value inside is immutable already
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        return (_rebuild, (type(self), self._field_values()))
+
+    def _is_frozen(self) -> bool:
+        return all(getattr(self, name, None) is None for name in self._DETACHED)
+
+    def _field_values(self) -> tuple[Any, ...]:
+        return tuple(getattr(self, f) for f in field_names(type(self)))
 
     def __setattr__(self, name: str, value: Any) -> None:
         raise AttributeError(_READ_ONLY.format(cls=type(self).__name__, name=name))
@@ -30,9 +52,11 @@ class Group:
         raise AttributeError(_READ_ONLY.format(cls=type(self).__name__, name=name))
 
     def __eq__(self, other: object) -> bool:
+        if other is self:
+            return True
         if type(other) is not type(self):
             return NotImplemented
-        return all(getattr(self, f) == getattr(other, f) for f in field_names(type(self)))
+        return all(same_value(getattr(self, f), getattr(other, f)) for f in field_names(type(self)))
 
     __hash__ = None  # type: ignore[assignment]
 
@@ -70,8 +94,34 @@ class GroupMap(Mapping[str, G]):
     def __setattr__(self, name: str, value: Any) -> None:
         raise AttributeError(_READ_ONLY.format(cls="GroupMap", name=name))
 
+    def __copy__(self) -> GroupMap[G]:
+        return self
+
+    def __deepcopy__(self, memo: dict[int, Any]) -> GroupMap[G]:
+        return self
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        return (GroupMap, (self._entries,))
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, GroupMap):
+            return NotImplemented
+        return self._entries == other._entries
+
+    __hash__ = None  # type: ignore[assignment]
+
     def __repr__(self) -> str:
         return f"GroupMap({self._entries!r})"
+
+
+def _rebuild(cls: type[Group], values: tuple[Any, ...]) -> Group:
+    """A frozen group of ``cls`` from its field values (copy and unpickle)."""
+    node = object.__new__(cls)
+    for name, value in zip(field_names(cls), values, strict=True):
+        object.__setattr__(node, name, value)
+    for name in cls._DETACHED:
+        object.__setattr__(node, name, None)
+    return node
 
 
 def _is_map(node: object) -> TypeGuard[GroupMap[Any]]:
@@ -81,6 +131,9 @@ def _is_map(node: object) -> TypeGuard[GroupMap[Any]]:
 
 
 _FIELDS: dict[type[Group], tuple[str, ...]] = {}
+# Attribute -> ROS name of each class's fields, recorded when a tree is first built:
+# `lambda_` is the attribute of ROS `lambda`, but also of a ROS name `lambda_`.
+_ROS_KEYS: dict[type[Group], dict[str, str]] = {}
 
 
 def field_names(cls: type[Group]) -> tuple[str, ...]:
@@ -116,21 +169,35 @@ def build_tree(
     children: dict[str, list[str]] = {}
     for path in (*groups, *maps):
         parent, _, name = path.rpartition(".")
-        if name != ENTRY_KEY:
+        if name and name != ENTRY_KEY:
             children.setdefault(parent, []).append(name)
+
+    def entries(template: str, level: Mapping[str, Any]) -> GroupMap[Any]:
+        entry = f"{template}.{ENTRY_KEY}" if template else ENTRY_KEY
+        return GroupMap({k: make(groups[entry], entry, v) for k, v in level.items()})
 
     def make(cls: type[Group], template: str, level: dict[str, Any]) -> Group:
         for name in children.get(template, ()):
             level.setdefault(name, {})
+        if cls not in _ROS_KEYS:
+            _ROS_KEYS[cls] = {attribute_name(key, top_level=not template): key for key in level}
         node = object.__new__(cls)
+        if template in maps and (template in groups or not template):
+            # An in-place map: the names that are not fields are its entries' keys.
+            fields = set(field_names(cls))
+            top = not template
+            keyed = {
+                k: v for k, v in level.items() if attribute_name(k, top_level=top) not in fields
+            }
+            level = {k: v for k, v in level.items() if k not in keyed}
+            object.__setattr__(node, MAP_SLOT, entries(template, keyed))
         for key, value in level.items():
             child = f"{template}.{key}" if template else key
-            if child in maps:
-                entry = f"{child}.{ENTRY_KEY}"
-                value = GroupMap({k: make(groups[entry], entry, v) for k, v in value.items()})
+            if child in maps and child not in groups:
+                value = entries(child, value)
             elif child in groups:
                 value = make(groups[child], child, value)
-            object.__setattr__(node, attribute_name(key), value)
+            object.__setattr__(node, attribute_name(key, top_level=not template), value)
         return node
 
     root = make(root_cls, "", nested)
@@ -226,14 +293,27 @@ def get_path(root: Group, path: tuple[str, ...]) -> Any:
     return node
 
 
-def to_dict(node: Group) -> dict[str, Any]:
+def to_dict(node: Group, *, top_level: bool = True) -> dict[str, Any]:
     """Nested dict keyed by ROS names (``from`` rather than the attribute ``from_``)."""
     out: dict[str, Any] = {}
+    ros_keys = _ROS_KEYS.get(type(node), {})
     for attr in field_names(type(node)):
         value = getattr(node, attr)
-        key = attr[:-1] if attr.endswith("_") and attribute_name(attr[:-1]) == attr else attr
+        if attr == MAP_SLOT:  # in-place entries sit beside the fields, by key
+            out.update((k, to_dict(entry, top_level=False)) for k, entry in value.items())
+            continue
+        key = ros_keys.get(attr) or _ros_key_guess(attr, top_level=top_level)
         if isinstance(value, GroupMap):
-            out[key] = {k: to_dict(entry) for k, entry in value.items()}
+            out[key] = {k: to_dict(entry, top_level=False) for k, entry in value.items()}
+        elif isinstance(value, Group):
+            out[key] = to_dict(value, top_level=False)
         else:
-            out[key] = to_dict(value) if isinstance(value, Group) else value
+            out[key] = value
     return out
+
+
+def _ros_key_guess(attr: str, *, top_level: bool) -> str:
+    """The ROS name of an attribute of a class no tree was built of: renamed ones lose the `_`."""
+    ros = attr[:-1]
+    renamed = attr.endswith("_") and attribute_name(ros, top_level=top_level) == attr
+    return ros if renamed else attr

@@ -46,7 +46,7 @@ _COMPARISONS: dict[str, tuple[str, Callable[[Any, Any], bool]]] = {
 }
 
 
-def _fmt(value: Any) -> str:
+def fmt(value: Any) -> str:
     text = repr(value)
     return text if len(text) <= 60 else text[:57] + "..."
 
@@ -62,7 +62,7 @@ class Compare:
         symbol, holds = _COMPARISONS[self.rule]
         if holds(value, self.limit):  # NaN compares false, so it is rejected
             return None
-        return f"must be {symbol} {self.limit!r} ({self.rule}), got {_fmt(value)}"
+        return f"must be {symbol} {self.limit!r} ({self.rule}), got {fmt(value)}"
 
     def describe(self) -> str:
         return f"must be {_COMPARISONS[self.rule][0]} {self.limit!r}"
@@ -87,7 +87,7 @@ class Bounds:
                 where = f"item {index} " if self.each else ""
                 return (
                     f"{where}must be within [{self.low!r}, {self.high!r}] ({self.rule}), "
-                    f"got {_fmt(item)}"
+                    f"got {fmt(item)}"
                 )
         return None
 
@@ -139,7 +139,7 @@ class RosRange:
             problem = self._problem(item)
             if problem is not None:
                 where = f"item {index} " if self.each else ""
-                return f"{where}{_fmt(item)} is {problem}: {self.describe()}"
+                return f"{where}{fmt(item)} is {problem}: {self.describe()}"
         return None
 
     def describe(self) -> str:
@@ -157,10 +157,10 @@ class OneOf:
     def __call__(self, value: Any) -> str | None:
         if value in self.choices:
             return None
-        return f"must be one of {_fmt(list(self.choices))} ({self.rule}), got {_fmt(value)}"
+        return f"must be one of {fmt(list(self.choices))} ({self.rule}), got {fmt(value)}"
 
     def describe(self) -> str:
-        return "one of " + ", ".join(_fmt(c) for c in self.choices)
+        return "one of " + ", ".join(fmt(c) for c in self.choices)
 
 
 @dataclass(frozen=True)
@@ -172,13 +172,13 @@ class SubsetOf:
         for index, item in enumerate(value):
             if item not in self.choices:
                 return (
-                    f"item {index} must be one of {_fmt(list(self.choices))} ({self.rule}), "
-                    f"got {_fmt(item)}"
+                    f"item {index} must be one of {fmt(list(self.choices))} ({self.rule}), "
+                    f"got {fmt(item)}"
                 )
         return None
 
     def describe(self) -> str:
-        return "every item one of " + ", ".join(_fmt(c) for c in self.choices)
+        return "every item one of " + ", ".join(fmt(c) for c in self.choices)
 
 
 @dataclass(frozen=True)
@@ -200,7 +200,7 @@ class Unique:
         seen: set[Any] = set()
         for item in value:
             if item in seen:
-                return f"must not repeat items ({self.rule}), {_fmt(item)} appears twice"
+                return f"must not repeat items ({self.rule}), {fmt(item)} appears twice"
             seen.add(item)
         return None
 
@@ -263,10 +263,10 @@ class Pattern:
                 return (
                     f"{where}could not be matched against {self.regex!r} ({self.rule}) within "
                     f"{PATTERN_TIMEOUT_S * 1000:g} ms: the pattern backtracks too much on "
-                    f"{_fmt(item)}"
+                    f"{fmt(item)}"
                 )
             if found is None:
-                return f"{where}must match {self.regex!r} ({self.rule}), got {_fmt(item)}"
+                return f"{where}must match {self.regex!r} ({self.rule}), got {fmt(item)}"
         return None
 
     def describe(self) -> str:
@@ -275,12 +275,17 @@ class Pattern:
 
 @dataclass(frozen=True)
 class Custom:
-    """A user function ``module:function`` taking the value, returning None or a reason."""
+    """A user function ``module:function`` taking the value then ``args``: None or a reason.
+
+    ``args`` are fixed arguments from the schema, so one function serves several
+    limits (``{custom: {function: 'pkg.checks:at_least_or_nan', args: [0.0]}}``).
+    """
 
     target: str
+    args: tuple[Any, ...] = ()
     rule: str = "custom"
 
-    def resolve(self) -> Callable[[Any], Any]:
+    def resolve(self) -> Callable[..., Any]:
         module_name, _, function_name = self.target.partition(":")
         module = importlib.import_module(module_name)
         function = getattr(module, function_name)
@@ -288,136 +293,26 @@ class Custom:
             raise TypeError(f"{self.target} is not callable")
         return function  # type: ignore[no-any-return]
 
+    @property
+    def call_text(self) -> str:
+        """How the check reads in messages: ``pkg.checks:f`` or ``pkg.checks:f(0.0)``."""
+        if not self.args:
+            return self.target
+        return f"{self.target}({', '.join(fmt(a) for a in self.args)})"
+
     def __call__(self, value: Any) -> str | None:
         try:
-            outcome = self.resolve()(value)
+            outcome = self.resolve()(value, *self.args)
         except Exception as exc:  # a failing check must reject, never crash the service
-            return f"custom validator {self.target} raised {type(exc).__name__}: {exc}"
+            return f"custom validator {self.call_text} raised {type(exc).__name__}: {exc}"
         if outcome is None or outcome is True:
             return None
         if outcome is False:
-            return f"rejected by custom validator {self.target}"
-        return f"{outcome} ({self.target})"
+            return f"rejected by custom validator {self.call_text}"
+        return f"{outcome} ({self.call_text})"
 
     def describe(self) -> str:
-        return f"passes {self.target}"
-
-
-@dataclass(frozen=True)
-class ValidatorKind:
-    """How one validator is spelled in a schema, what it applies to, how it is built."""
-
-    name: str
-    applies_to: frozenset[str]
-    build: Callable[[Any, str], Validator]  # (argument, parameter type) -> validator
-    takes_argument: bool = True
-
-
-class ValidatorArgumentError(ValueError):
-    pass
-
-
-def _number(arg: Any, what: str) -> float:
-    if isinstance(arg, bool) or not isinstance(arg, (int, float)):
-        raise ValidatorArgumentError(f"{what} must be a number, got {_fmt(arg)}")
-    if isinstance(arg, float) and math.isnan(arg):
-        raise ValidatorArgumentError(f"{what} must be a number, not NaN (nothing compares to NaN)")
-    return arg
-
-
-def _pair(arg: Any, what: str) -> tuple[float, float]:
-    if not isinstance(arg, (list, tuple)) or len(arg) != 2:
-        raise ValidatorArgumentError(f"{what} takes [low, high], got {_fmt(arg)}")
-    low, high = _number(arg[0], f"{what} low"), _number(arg[1], f"{what} high")
-    if low > high:
-        raise ValidatorArgumentError(f"{what} low {low!r} is greater than high {high!r}")
-    return low, high
-
-
-def _choices(arg: Any, what: str) -> tuple[Any, ...]:
-    if not isinstance(arg, (list, tuple)) or not arg:
-        raise ValidatorArgumentError(f"{what} takes a non-empty list, got {_fmt(arg)}")
-    return tuple(arg)
-
-
-def _length(arg: Any, _type: str) -> Length:
-    if isinstance(arg, int) and not isinstance(arg, bool):
-        if arg < 0:
-            raise ValidatorArgumentError(f"length must be >= 0, got {arg}")
-        return Length(arg, arg)
-    if isinstance(arg, dict) and arg and set(arg) <= {"min", "max", "exact"}:
-        for key, item in arg.items():
-            if isinstance(item, bool) or not isinstance(item, int) or item < 0:
-                raise ValidatorArgumentError(f"length {key} must be an integer >= 0")
-        if "exact" in arg:
-            if len(arg) > 1:
-                raise ValidatorArgumentError("length takes exact, or min and/or max, not both")
-            return Length(arg["exact"], arg["exact"])
-        low, high = arg.get("min"), arg.get("max")
-        if low is not None and high is not None and low > high:
-            raise ValidatorArgumentError(f"length min {low} is greater than max {high}")
-        return Length(low, high)
-    raise ValidatorArgumentError(f"length takes an integer or {{min, max, exact}}, got {_fmt(arg)}")
-
-
-def _pattern(arg: Any, _type: str) -> Pattern:
-    if not isinstance(arg, str):
-        raise ValidatorArgumentError(f"pattern must be a string, got {_fmt(arg)}")
-    try:
-        return Pattern(arg)
-    except (re.error, regex_engine.error) as exc:
-        raise ValidatorArgumentError(f"pattern {arg!r} is not a valid regex: {exc}") from None
-
-
-_CUSTOM_TARGET = re.compile(r"[A-Za-z_][\w]*(\.[A-Za-z_][\w]*)*:[A-Za-z_]\w*")
-
-
-def _custom(arg: Any, _type: str) -> Custom:
-    if not isinstance(arg, str) or not _CUSTOM_TARGET.fullmatch(arg):
-        raise ValidatorArgumentError(f"custom takes 'package.module:function', got {_fmt(arg)}")
-    return Custom(arg)
-
-
-def _compare(rule: str, arg: Any) -> Compare:
-    # Called per schema entry, not once at import, so the tests exercise (and mutate) it.
-    return Compare(rule, _number(arg, rule))
-
-
-KINDS: dict[str, ValidatorKind] = {
-    k.name: k
-    for k in (
-        ValidatorKind("gt", NUMERIC, lambda a, _t: _compare("gt", a)),
-        ValidatorKind("ge", NUMERIC, lambda a, _t: _compare("ge", a)),
-        ValidatorKind("lt", NUMERIC, lambda a, _t: _compare("lt", a)),
-        ValidatorKind("le", NUMERIC, lambda a, _t: _compare("le", a)),
-        ValidatorKind("bounds", NUMERIC, lambda a, _t: Bounds(*_pair(a, "bounds"))),
-        ValidatorKind(
-            "element_bounds",
-            NUMERIC_ARRAYS,
-            lambda a, _t: Bounds(*_pair(a, "element_bounds"), each=True, rule="element_bounds"),
-        ),
-        ValidatorKind(
-            "one_of",
-            frozenset({"int", "double", "string"}),
-            lambda a, _t: OneOf(_choices(a, "one_of")),
-        ),
-        ValidatorKind(
-            "subset_of",
-            frozenset({"int_array", "double_array", "string_array"}),
-            lambda a, _t: SubsetOf(_choices(a, "subset_of")),
-        ),
-        ValidatorKind("not_empty", SIZED, lambda _a, _t: NotEmpty(), takes_argument=False),
-        ValidatorKind("unique", ARRAYS, lambda _a, _t: Unique(), takes_argument=False),
-        ValidatorKind("length", SIZED, _length),
-        ValidatorKind("pattern", frozenset({"string", "string_array"}), _pattern),
-        ValidatorKind("custom", ALL_TYPES, _custom),
-    )
-}
-
-
-def build_validator(rule: str, argument: Any, param_type: str) -> Validator:
-    """Build one validator; raises ValidatorArgumentError or KeyError for unknown rules."""
-    return KINDS[rule].build(argument, param_type)
+        return f"passes {self.call_text}"
 
 
 def first_failure(validators: Sequence[Validator], value: Any) -> str | None:

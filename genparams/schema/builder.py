@@ -7,32 +7,17 @@ parameter type. Every problem is collected; none stops the walk.
 
 from __future__ import annotations
 
-import math
 import os
 from collections.abc import Collection, Iterable, Iterator
 from typing import Any
 
 from genparams.runtime import naming
-from genparams.runtime.suggest import did_you_mean
-from genparams.runtime.types import INT64_MAX, INT64_MIN, TYPES, ParamType, ValueTypeError
-from genparams.runtime.validators import (
-    KINDS,
-    Custom,
-    RosRange,
-    Validator,
-    ValidatorArgumentError,
-    build_validator,
-)
+from genparams.runtime.types import TYPES, ValueTypeError
+from genparams.runtime.validators import Custom
 from genparams.schema.errors import SchemaError, SchemaProblem
+from genparams.schema.leaf_checks import LeafChecks
 from genparams.schema.loader import LoadedDocument, Path, dotted
-from genparams.schema.model import (
-    Group,
-    Parameter,
-    RangeSpec,
-    Schema,
-    ValidatorSpec,
-    with_entry_keys,
-)
+from genparams.schema.model import Group, OpenNamespace, Parameter, Schema, with_entry_keys
 from genparams.schema.references import check_aliases, check_maps
 from genparams.schema.rule_builder import build_rules
 
@@ -65,15 +50,6 @@ def model_problems(document: LoadedDocument, known: Iterable[SchemaProblem]) -> 
     return builder.problems
 
 
-def _frozen(value: Any) -> Any:
-    """Lists become tuples, so the model is hashable and immutable."""
-    if isinstance(value, list):
-        return tuple(_frozen(v) for v in value)
-    if isinstance(value, dict):
-        return {k: _frozen(v) for k, v in value.items()}
-    return value
-
-
 class _ModelBuilder:
     def __init__(self, document: LoadedDocument, skip: Collection[str] = ()) -> None:
         self.document = document
@@ -86,6 +62,7 @@ class _ModelBuilder:
         self.mapped: list[tuple[Group, Path]] = []
         self.aliases: list[tuple[str, Path, Parameter]] = []  # (alias, where, its parameter)
         self.unbuilt: list[tuple[str, ...]] = []  # paths of names left out for known problems
+        self.leaf_checks = LeafChecks(self.problem)
 
     def problem(self, path: Path, message: str, *, at_key: bool = False) -> None:
         where = self.document.key_location(path) if at_key else self.document.value_location(path)
@@ -119,12 +96,15 @@ class _ModelBuilder:
         path: tuple[str, ...],
         attribute: str,
         class_name: str,
+        *,
+        in_place: bool = False,
     ) -> Group:
         parameters: list[Parameter] = []
         groups: list[Group] = []
+        open_namespaces: list[OpenNamespace] = []
         attributes: dict[str, str] = {}
         mapped_over = mapping.get(FOR_EACH, "")
-        if mapped_over and not path:
+        if mapped_over and not path and not in_place:
             self.problem(
                 (*doc_path, FOR_EACH),
                 "the top level cannot be mapped: put for_each in a namespace",
@@ -137,14 +117,28 @@ class _ModelBuilder:
             if key == FOR_EACH:
                 continue
             key_path = (*doc_path, key)
-            if not self.check_name(key, key_path, attributes, top_level=not path):
+            if key == naming.ENTRY_KEY:
+                entries = self.entries_in_place(value, key_path, member_path)
+                if entries is not None:
+                    groups.append(entries)
+                continue
+            if not self.check_name(key, value, key_path, attributes, top_level=not member_path):
                 continue
             child_path = (*member_path, key)
             if self.skipped(key_path, whole_tree=isinstance(value, dict) and "type" in value):
                 self.unbuilt.append(child_path)
                 continue
-            child_attribute = naming.attribute_name(key)
-            if isinstance(value, dict) and "type" in value:
+            child_attribute = naming.attribute_name(key, top_level=not member_path)
+            if is_open_namespace(value):
+                open_namespaces.append(
+                    OpenNamespace(
+                        ros_name=".".join(child_path),
+                        path=child_path,
+                        description=value.get("description", ""),
+                        location=self.document.key_location(key_path),
+                    )
+                )
+            elif isinstance(value, dict) and "type" in value:
                 parameters.append(self.parameter(value, key_path, child_path, child_attribute))
             elif isinstance(value, dict):
                 child_class = self.group_class_name(child_path)
@@ -160,17 +154,37 @@ class _ModelBuilder:
             parameters=tuple(parameters),
             groups=tuple(groups),
             mapped_over=mapped_over,
+            open_namespaces=tuple(open_namespaces),
+            in_place=in_place,
         )
         if mapped_over:
             self.mapped.append((group, doc_path))
         return group
+
+    def entries_in_place(self, value: Any, key_path: Path, path: tuple[str, ...]) -> Group | None:
+        """A ``"*"`` key: a mapped group whose entries sit in this namespace, by key."""
+        if not (isinstance(value, dict) and FOR_EACH in value):
+            self.problem(
+                key_path,
+                '"*" stands for the entries of a map: give it for_each, the string_array '
+                "parameter whose items key them",
+                at_key=True,
+            )
+            return None
+        if self.skipped(key_path, whole_tree=False):
+            self.unbuilt.append((*path, naming.ENTRY_KEY))
+            return None
+        words = "".join(naming.pascal_case(p) for p in path if p != naming.ENTRY_KEY)
+        depth = path.count(naming.ENTRY_KEY) + 1  # "Entry" once per map level
+        entry_class = self.unique_class_name(f"{words}{'Entry' * depth}Group")
+        return self.group(value, key_path, path, "", entry_class, in_place=True)
 
     def is_unbuilt(self, name: str) -> bool:
         """Whether ``name`` (a ROS name or its attribute spelling) lies in a part of the
         schema left out for a problem of its own: a reference to it is no new problem."""
         parts = tuple(name.split("."))
         for path in self.unbuilt:
-            spelled = tuple(map(naming.attribute_name, path))
+            spelled = naming.attribute_parts(".".join(path))
             if parts[: len(path)] in (path, spelled):
                 return True
         return False
@@ -184,7 +198,9 @@ class _ModelBuilder:
 
     def group_class_name(self, path: tuple[str, ...]) -> str:
         words = (naming.pascal_case(part) for part in path if part != naming.ENTRY_KEY)
-        base = "".join(words) + "Group"
+        return self.unique_class_name("".join(words) + "Group")
+
+    def unique_class_name(self, base: str) -> str:
         candidate, number = base, 2
         while candidate in self.class_names:
             candidate, number = f"{base}{number}", number + 1
@@ -192,7 +208,7 @@ class _ModelBuilder:
         return candidate
 
     def check_name(
-        self, key: str, key_path: Path, seen: dict[str, str], *, top_level: bool
+        self, key: str, value: Any, key_path: Path, seen: dict[str, str], *, top_level: bool
     ) -> bool:
         if not naming.is_ros_token(key):
             self.problem(
@@ -202,23 +218,15 @@ class _ModelBuilder:
                 at_key=True,
             )
             return False
-        if top_level and key in naming.RESERVED_TOP_LEVEL:
+        if top_level and key in naming.NODE_PARAMETERS and not _adopts(value):
             self.problem(
                 key_path,
-                f"name {key!r} is reserved by the generated class's API; "
-                "rename it or move it into a namespace",
+                f"every node declares {key!r} already: leave it out, or give it adopt: true "
+                "to take over checking it",
                 at_key=True,
             )
             return False
-        if key in naming.SHADOWING:
-            self.problem(
-                key_path,
-                f"name {key!r} would hide the Python name {key} that the generated classes "
-                "use; rename it",
-                at_key=True,
-            )
-            return False
-        attribute = naming.attribute_name(key)
+        attribute = naming.attribute_name(key, top_level=top_level)
         if attribute in seen:
             self.problem(
                 key_path,
@@ -244,9 +252,9 @@ class _ModelBuilder:
                 self.problem((*doc_path, "default"), f"default does not match type: {exc}")
                 default_ok = False
 
-        value_range = self.range(leaf, doc_path, param_type)
-        choices = self.choices(leaf, doc_path, param_type)
-        validators = self.validators(leaf, doc_path, param_type)
+        value_range = self.leaf_checks.range(leaf, doc_path, param_type)
+        choices = self.leaf_checks.choices(leaf, doc_path, param_type)
+        validators = self.leaf_checks.validators(leaf, doc_path, param_type)
 
         parameter = Parameter(
             ros_name=".".join(path),
@@ -265,6 +273,8 @@ class _ModelBuilder:
             deprecated=leaf.get("deprecated", ""),
             aliases=tuple(leaf.get("aliases", ())),
             location=self.document.key_location(doc_path),
+            configure_only=leaf.get("configure_only", False),
+            adopt=leaf.get("adopt", False),
         )
         # The runtime's own checks, compiled once: they judge the default here, and the
         # model keeps them to word each constraint in every output.
@@ -280,169 +290,27 @@ class _ModelBuilder:
                 reason = check(default)
                 if reason is not None:
                     self.problem((*doc_path, "default"), f"default violates {key}: {reason}")
-        self.check_satisfiable(doc_path, param_type, checks)
+        self.leaf_checks.check_satisfiable(doc_path, param_type, checks)
+        if parameter.adopt and naming.ENTRY_KEY in path:
+            self.problem(
+                (*doc_path, "adopt"),
+                "adopt is not supported inside a mapped group: entries come and go with "
+                "their keys, which other code does not follow",
+                at_key=True,
+            )
         self.leaf_paths[parameter.ros_name] = doc_path
         for index, alias in enumerate(parameter.aliases):
             self.aliases.append((alias, (*doc_path, "aliases", index), parameter))
         return parameter
 
-    def range(
-        self, leaf: dict[str, Any], doc_path: Path, param_type: ParamType
-    ) -> RangeSpec | None:
-        if "range" not in leaf:
-            return None
-        range_path = (*doc_path, "range")
-        if not param_type.is_numeric:
-            self.problem(
-                range_path,
-                f"range applies to int, double, int_array and double_array, not {param_type.name}",
-                at_key=True,
-            )
-            return None
-        raw = leaf["range"]
-        values: dict[str, int | float] = {}
-        ok = True
-        for key in ("min", "max", "step"):
-            value = raw.get(key, 0)
-            if param_type.scalar_kind == "int":
-                if isinstance(value, float) and not value.is_integer():
-                    self.problem(
-                        (*range_path, key), f"{key} must be an integer for {param_type.name}"
-                    )
-                    ok = False
-                    continue
-                value = int(value)
-                if not INT64_MIN <= value <= INT64_MAX:
-                    self.problem((*range_path, key), f"{key} {value} does not fit in int64")
-                    ok = False
-                    continue
-            else:
-                try:
-                    value = float(value)
-                except OverflowError:
-                    self.problem((*range_path, key), f"{key} is too large for a double")
-                    ok = False
-                    continue
-                if math.isnan(value) or (key == "step" and math.isinf(value)):
-                    self.problem((*range_path, key), f"{key} must be a finite number")
-                    ok = False
-                    continue
-            values[key] = value
-        if not ok:
-            return None
-        if values["min"] > values["max"]:
-            self.problem(
-                (*range_path, "min"),
-                f"min {values['min']!r} is greater than max {values['max']!r}",
-            )
-            return None
-        step = values["step"]
-        if step and not math.isfinite((values["max"] - values["min"]) / step):
-            # ROS computes (value - min) / step, which must stay a finite double.
-            self.problem(
-                (*range_path, "step"),
-                f"step {step!r} needs finite min and max and (max - min) / step below 1e308",
-            )
-            return None
-        return RangeSpec(values["min"], values["max"], step)
 
-    def choices(
-        self, leaf: dict[str, Any], doc_path: Path, param_type: ParamType
-    ) -> tuple[Any, ...] | None:
-        if "choices" not in leaf:
-            return None
-        path = (*doc_path, "choices")
-        if (
-            param_type.scalar_kind not in ("int", "double", "string")
-            or param_type.name == "byte_array"
-        ):
-            self.problem(path, f"choices do not apply to {param_type.name}", at_key=True)
-            return None
-        element = TYPES[param_type.scalar_kind]
-        out = []
-        for index, choice in enumerate(leaf["choices"]):
-            try:
-                out.append(element.coerce_default(choice))
-            except ValueTypeError as exc:
-                self.problem((*path, index), f"choice does not match type: {exc}")
-        if len(set(out)) != len(out):
-            self.problem(path, "choices repeat a value")
-        return tuple(out)
+def _adopts(value: Any) -> bool:
+    return isinstance(value, dict) and value.get("adopt") is True
 
-    def validators(
-        self, leaf: dict[str, Any], doc_path: Path, param_type: ParamType
-    ) -> tuple[ValidatorSpec, ...]:
-        specs = []
-        for index, entry in enumerate(leaf.get("validators", [])):
-            path = (*doc_path, "validators", index)
-            if isinstance(entry, str):
-                rule, argument, bare = entry, None, True
-            else:
-                ((rule, argument),) = entry.items()
-                bare = False
-            kind = KINDS.get(rule)
-            if kind is None:
-                self.problem(path, f"unknown validator {rule!r}{did_you_mean(rule, KINDS)}")
-                continue
-            if param_type.name not in kind.applies_to:
-                applies = ", ".join(sorted(kind.applies_to))
-                self.problem(
-                    path, f"validator {rule!r} does not apply to {param_type.name} (only {applies})"
-                )
-                continue
-            if kind.takes_argument and bare:
-                self.problem(path, f"validator {rule!r} needs an argument: {{{rule}: ...}}")
-                continue
-            if not kind.takes_argument and not bare and argument not in (None, True):
-                self.problem(path, f"validator {rule!r} takes no argument: write just {rule}")
-                continue
-            argument = _frozen(argument) if kind.takes_argument else None
-            if rule in ("one_of", "subset_of") and isinstance(argument, tuple):
-                argument = self.typed_choices(path, argument, param_type)
-            try:
-                build_validator(rule, argument, param_type.name)  # its argument errors, here
-            except ValidatorArgumentError as exc:
-                self.problem(path, str(exc))
-                continue
-            specs.append(ValidatorSpec(rule, argument))
-        return tuple(specs)
 
-    def typed_choices(
-        self, path: Path, argument: tuple[Any, ...], param_type: ParamType
-    ) -> tuple[Any, ...]:
-        element = TYPES[param_type.scalar_kind]
-        out = []
-        for index, choice in enumerate(argument):
-            try:
-                out.append(element.coerce_default(choice))
-            except ValueTypeError as exc:
-                self.problem((*path, index), f"choice does not match type: {exc}")
-        return tuple(out)
-
-    def check_satisfiable(
-        self, doc_path: Path, param_type: ParamType, checks: list[tuple[str, Validator]]
-    ) -> None:
-        """Numeric limits that leave no valid value are a schema error, not a runtime surprise."""
-        if param_type.is_array or not param_type.is_numeric:
-            return
-        low: float = INT64_MIN if param_type.scalar_kind == "int" else -math.inf
-        high: float = INT64_MAX if param_type.scalar_kind == "int" else math.inf
-        low_open = high_open = False
-        for _key, check in checks:
-            bounds = _limits(check)
-            if bounds is None:
-                continue
-            lo, lo_open, hi, hi_open = bounds
-            if lo > low or (lo == low and lo_open):
-                low, low_open = lo, lo_open
-            if hi < high or (hi == high and hi_open):
-                high, high_open = hi, hi_open
-        if low > high or (low == high and (low_open or high_open)):
-            self.problem(
-                doc_path,
-                "range and validators contradict each other: no value satisfies all of them",
-                at_key=True,
-            )
+def is_open_namespace(value: Any) -> bool:
+    """``{open: true}``: a namespace other code fills (``open`` with a mapping is a name)."""
+    return isinstance(value, dict) and value.get("open") is True and "type" not in value
 
 
 def _keys(tree: Any) -> Iterator[str]:
@@ -450,18 +318,3 @@ def _keys(tree: Any) -> Iterator[str]:
         for key, value in tree.items():
             yield str(key)
             yield from _keys(value)
-
-
-def _limits(check: Validator) -> tuple[float, bool, float, bool] | None:
-    from genparams.runtime.validators import Bounds, Compare
-
-    if isinstance(check, RosRange) or (isinstance(check, Bounds) and not check.each):
-        return (check.low, False, check.high, False)
-    if isinstance(check, Compare):
-        return {
-            "gt": (check.limit, True, math.inf, False),
-            "ge": (check.limit, False, math.inf, False),
-            "lt": (-math.inf, False, check.limit, True),
-            "le": (-math.inf, False, check.limit, False),
-        }[check.rule]
-    return None

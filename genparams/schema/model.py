@@ -55,6 +55,8 @@ class Parameter:
     deprecated: str
     aliases: tuple[str, ...]  # old dotted names, relative to the prefix
     location: Location
+    configure_only: bool = False  # lifecycle nodes: set only while unconfigured or inactive
+    adopt: bool = False  # other code may declare it first; genparams takes it over
     # For a for_each parameter: the mapped groups its items name (their checks join its own).
     keys_entries_of: str = ""
 
@@ -132,6 +134,8 @@ class Parameter:
             ("additional_constraints", self.additional_constraints, ""),
             ("deprecated", self.deprecated, ""),
             ("aliases", self.aliases, ()),
+            ("configure_only", self.configure_only, False),
+            ("adopt", self.adopt, False),
         ):
             if value != empty:
                 options.append((key, value))
@@ -148,11 +152,28 @@ class Field:
 
 
 @dataclass(frozen=True)
+class OpenNamespace:
+    """A namespace whose parameters other code declares (a plugin, a filter chain).
+
+    genparams declares nothing under it; params files may set anything there,
+    and docs say who owns it.
+    """
+
+    ros_name: str  # dotted; holds ``*`` inside a mapped group
+    path: tuple[str, ...]
+    description: str
+    location: Location
+
+
+@dataclass(frozen=True)
 class Group:
     """A namespace; with ``mapped_over``, a mapped group: one entry per item of that parameter.
 
     Inside a mapped group, names hold ``*`` where an entry's key goes:
     the parameter ``p`` of the mapped group ``gains`` is ``gains.*.p``.
+    An ``in_place`` mapped group (schema key ``"*"``) adds no name of its own:
+    its entries sit in its parent namespace beside the parent's other names,
+    and Python reads them by key on the parent (``cfg.constraints["elbow"]``).
     """
 
     ros_name: str  # dotted namespace, "" for the top level
@@ -162,11 +183,18 @@ class Group:
     parameters: tuple[Parameter, ...]
     groups: tuple[Group, ...]
     mapped_over: str = ""  # ROS name of the string_array parameter whose items key the entries
+    open_namespaces: tuple[OpenNamespace, ...] = ()
+    in_place: bool = False  # a "*" group: path and ros_name are its parent's
+
+    @property
+    def entries_group(self) -> Group | None:
+        """The in-place mapped group whose entries this group holds by key, if any."""
+        return next((g for g in self.groups if g.in_place), None)
 
     @property
     def spec_path(self) -> str:
         """The runtime's key for this group's class: one entry's path for a mapped group."""
-        return f"{self.ros_name}.{ENTRY_KEY}" if self.mapped_over else self.ros_name
+        return ".".join((*self.path, ENTRY_KEY)) if self.mapped_over else self.ros_name
 
     @property
     def annotation(self) -> str:
@@ -182,18 +210,25 @@ class Group:
     @property
     def fields(self) -> tuple[Field, ...]:
         fields = [Field(p.attribute, p.annotation, p.docstring) for p in self.parameters]
-        fields.extend(Field(g.attribute, g.annotation, g.field_docstring) for g in self.groups)
+        fields.extend(
+            Field(g.attribute, g.annotation, g.field_docstring)
+            for g in self.groups
+            if not g.in_place
+        )
         return tuple(sorted(fields, key=lambda f: f.attribute))
 
     @property
     def docstring(self) -> str:
         if self.mapped_over:
-            return f"One entry of {self.ros_name}, for each item of {self.mapped_over}."
+            where = self.ros_name or "the top level"
+            return f"One entry of {where}, for each item of {self.mapped_over}."
         return f"Parameters under {self.ros_name}." if self.ros_name else ""
 
     @property
     def slots(self) -> tuple[str, ...]:
-        return tuple(f.attribute for f in self.fields)
+        """Field attributes; ``_map`` holds the entries of an in-place mapped group."""
+        names = tuple(f.attribute for f in self.fields)
+        return ("_map", *names) if self.entries_group is not None else names  # ruff's order
 
     def walk_groups(self) -> Iterator[Group]:
         """Every group below this one, children before parents (definition order)."""
@@ -205,6 +240,11 @@ class Group:
         yield from self.parameters
         for group in self.groups:
             yield from group.walk_parameters()
+
+    def walk_open_namespaces(self) -> Iterator[OpenNamespace]:
+        yield from self.open_namespaces
+        for group in self.groups:
+            yield from group.walk_open_namespaces()
 
 
 @dataclass(frozen=True)
@@ -242,6 +282,10 @@ class Schema:
         return tuple(sorted(self.root.walk_parameters(), key=lambda p: p.ros_name))
 
     @property
+    def open_namespaces(self) -> tuple[OpenNamespace, ...]:
+        return tuple(sorted(self.root.walk_open_namespaces(), key=lambda n: n.ros_name))
+
+    @property
     def docstring(self) -> str:
         """Module and class docstring. Stripped, because ruff format strips docstrings."""
         return self.description.strip() or f"Parameters of {self.name}."
@@ -256,6 +300,11 @@ class Schema:
         return bool(self.maps)
 
     @property
+    def uses_entries_by_key(self) -> bool:
+        """Whether a generated class reads in-place entries by key (``__getitem__``)."""
+        return any(g.entries_group is not None for g in (self.root, *self.nested_groups))
+
+    @property
     def class_names(self) -> tuple[str, ...]:
         return tuple(sorted([self.class_name, *(g.class_name for g in self.nested_groups)]))
 
@@ -265,7 +314,7 @@ def with_entry_keys(root: Group) -> Group:
     keyed: dict[str, list[str]] = {}
     for group in root.walk_groups():  # the order the runtime compiles SchemaSpec.maps in
         if group.mapped_over:
-            keyed.setdefault(group.mapped_over, []).append(group.ros_name)
+            keyed.setdefault(group.mapped_over, []).append(group.ros_name or "the top level")
     if not keyed:
         return root
 

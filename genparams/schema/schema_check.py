@@ -94,7 +94,7 @@ def _problems(
 
 
 def _validator_message(instance: Any) -> str:
-    from genparams.runtime.validators import KINDS
+    from genparams.runtime.validator_kinds import KINDS
 
     if isinstance(instance, str) and instance in KINDS:
         return f"validator {instance!r} needs an argument: {{{instance}: ...}}"

@@ -99,5 +99,6 @@ def test_docs_name_the_key_parameter_and_old_names() -> None:
     assert max_speed.old_names == "speed_limit, limits.speed"
     (joints,) = [p for p in by_name[""].parameters if p.name == "joints"]
     assert joints.constraints == (
-        "each item names an entry of gains: letters, digits, '_' and '-'; no repeats",
+        "each item names an entry of gains: any text but '.', '*', spaces and control "
+        "characters; no repeats",
     )

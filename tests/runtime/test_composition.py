@@ -116,8 +116,8 @@ def test_a_prefix_can_be_declared_once(ros: RosHarness, tmp_path: Path) -> None:
     with pytest.raises(ParameterDeclarationError) as caught:
         module.MotionParams.declare(node, prefix="left")
     assert caught.value.problems == (
-        "left.max_speed: already declared on this node by other code",
-        "left.min_speed: already declared on this node by other code",
+        "MotionParams is already declared at prefix 'left': declare a class once per prefix "
+        "and share the view it returns",
     )
     right = module.MotionParams.declare(node, prefix="right")
     assert right.max_speed == 2.0

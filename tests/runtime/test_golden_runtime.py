@@ -13,6 +13,7 @@ import pytest
 import yaml
 from rclpy.parameter import Parameter
 
+from genparams.runtime.entries import expand
 from genparams.runtime.spec import compile_schema
 from genparams.runtime.types import TYPES
 from tests.golden import runtime_cases
@@ -37,6 +38,8 @@ def test_golden_module_declares_and_reads_back(ros: RosHarness, case: Path) -> N
         param_type = TYPES[param.spec.type]
         source = given[name] if param.spec.required else param.spec.default
         expected[name] = param_type.coerce_default(source)
+    for name, entry in expand(compiled, expected).items():  # entries of mapped groups
+        expected[name] = TYPES[entry.spec.type].coerce_default(entry.spec.default)
     parameters = [
         Parameter(
             name,

@@ -208,7 +208,7 @@ def test_keys_with_dashes_and_leading_digits_work_through_services(
     assert "gains.left-arm.p" not in listed(client, "gains")
 
 
-@pytest.mark.parametrize("key", ["left.arm", "a b", "", "arm/left", "ü"])
+@pytest.mark.parametrize("key", ["left.arm", "a b", "", "*", "tab\tkey"])
 def test_key_that_cannot_name_an_entry_is_rejected(
     ros: RosHarness, arm: types.ModuleType, key: str
 ) -> None:
@@ -218,7 +218,7 @@ def test_key_that_cannot_name_an_entry_is_rejected(
     (result,) = client.set(Parameter("joints", value=["shoulder", key]))
     assert _reason(result) == (
         f"joints: item 1 {key!r} cannot name an entry of gains: "
-        "use letters, digits, '_' and '-' (for_each)"
+        "use any text but '.', '*', spaces and control characters (for_each)"
     )
     assert cfg.joints == ("shoulder", "elbow") and list(cfg.gains) == ["shoulder", "elbow"]
     assert node.get_parameter("joints").value == ["shoulder", "elbow"]
@@ -235,9 +235,10 @@ def test_repeated_key_is_rejected(ros: RosHarness, arm: types.ModuleType) -> Non
     )
     assert cfg.joints == ("shoulder", "elbow")
     (described,) = client.describe("joints")
-    assert "each item names an entry of gains: letters, digits, '_' and '-'; no repeats" in (
-        described.additional_constraints
-    )
+    assert (
+        "each item names an entry of gains: any text but '.', '*', spaces and control "
+        "characters; no repeats"
+    ) in (described.additional_constraints)
 
     bad = ros.node(args=["-p", "fingers:=[thumb, '']"])
     with pytest.raises(ParameterDeclarationError, match=r"fingers: override rejected: item 1 ''"):

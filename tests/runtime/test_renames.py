@@ -186,7 +186,7 @@ def test_arm_demo_runs() -> None:
         "  node parameters under gains: ['left-arm.i', 'left-arm.p', 'shoulder.i', 'shoulder.p', "
         "'wrist.i', 'wrist.p']",
         "set joints := [left.arm] -> rejected: joints: item 0 'left.arm' cannot name an entry "
-        "of gains: use letters, digits, '_' and '-' (for_each)",
+        "of gains: use any text but '.', '*', spaces and control characters (for_each)",
         "set speed_limit := 0.5 -> max_speed, speed_limit = [0.5, 0.5]; cfg: 0.5",
     ]
     assert len(warnings_about(result.stderr, "speed_limit")) == 1

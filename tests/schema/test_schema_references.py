@@ -72,7 +72,8 @@ def test_for_each_default_keys_must_be_able_to_name_entries(tmp_path: Path) -> N
 """
     assert problems(tmp_path, body) == [
         "bad.yaml:4:41: parameters.joints.default: default violates for_each: item 1 "
-        "'left.arm' cannot name an entry of gains: use letters, digits, '_' and '-'",
+        "'left.arm' cannot name an entry of gains: use any text but '.', '*', spaces and "
+        "control characters",
     ]
 
 

@@ -49,7 +49,7 @@ class ArmParams(_Params):
     "Mapped group gains: one entry per item of joints."
 
     joints: tuple[str, ...]
-    "Controlled joints; each has an entry in gains.\n\nType: string_array. Default: ('shoulder', 'elbow'). Constraints: each item names an entry of gains: letters, digits, '_' and '-'; no repeats."
+    "Controlled joints; each has an entry in gains.\n\nType: string_array. Default: ('shoulder', 'elbow'). Constraints: each item names an entry of gains: any text but '.', '*', spaces and control characters; no repeats."
 
     legacy_mode: bool
     "legacy_mode\n\nType: bool. Default: False. Deprecated: the controller picks the mode itself."

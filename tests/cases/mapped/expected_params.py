@@ -105,13 +105,13 @@ class MappedArmParams(_Params):
     "Namespace camera."
 
     fingers: tuple[str, ...]
-    "fingers\n\nType: string_array. Default: ('thumb', 'index'). Constraints: each item names an entry of gains.*.tips: letters, digits, '_' and '-'; no repeats."
+    "fingers\n\nType: string_array. Default: ('thumb', 'index'). Constraints: each item names an entry of gains.*.tips: any text but '.', '*', spaces and control characters; no repeats."
 
     gains: _Mapping[str, GainsGroup]
     "Mapped group gains: one entry per item of joints."
 
     joints: tuple[str, ...]
-    "One gains entry per joint.\n\nType: string_array. Default: ('shoulder', 'elbow'). Constraints: each item names an entry of gains: letters, digits, '_' and '-'; no repeats."
+    "One gains entry per joint.\n\nType: string_array. Default: ('shoulder', 'elbow'). Constraints: each item names an entry of gains: any text but '.', '*', spaces and control characters; no repeats."
 
     legacy_mode: bool
     "legacy_mode\n\nType: bool. Default: False. Deprecated: the controller picks the mode."
@@ -126,7 +126,7 @@ class MappedArmParams(_Params):
     "Mapped group tool: one entry per item of tools."
 
     tools: tuple[str, ...]
-    "No default items.\n\nType: string_array. Default: (). Constraints: each item names an entry of tool: letters, digits, '_' and '-'; no repeats."
+    "No default items.\n\nType: string_array. Default: (). Constraints: each item names an entry of tool: any text but '.', '*', spaces and control characters; no repeats."
 
     _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec(
         name="mapped_arm",

@@ -1,0 +1,107 @@
+"""genparams import-gpl GPL_YAML [-o FILE | --out-dir DIR] [--checks-module NAME]"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from genparams.api import load_schema
+from genparams.gpl.convert import GplError, Imported, import_gpl
+from genparams.gpl.emit import schema_text, stub_text
+from genparams.integration.writing import write_all
+from genparams.schema.errors import SchemaError
+from genparams.schema.loader import MAX_BYTES, load_yaml
+
+
+def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    parser = subparsers.add_parser(
+        "import-gpl",
+        help="convert a generate_parameter_library YAML file into a genparams schema",
+    )
+    parser.add_argument("gpl_file", metavar="GPL_YAML", type=Path)
+    where = parser.add_mutually_exclusive_group()
+    where.add_argument("-o", "--output", type=Path, metavar="FILE", help="default: stdout")
+    where.add_argument(
+        "--out-dir",
+        type=Path,
+        metavar="DIR",
+        help="write DIR/<name>.yaml (and DIR/<checks module>.py when custom validators are used)",
+    )
+    parser.add_argument(
+        "--checks-module",
+        metavar="NAME",
+        help="Python module of the custom validators (default: <name>_checks)",
+    )
+    parser.add_argument(
+        "--adopt",
+        action="append",
+        default=[],
+        metavar="NAME",
+        help="a parameter the node's own code declares before the generated class "
+        "(dotted name; repeatable): marked adopt: true",
+    )
+    parser.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    file = str(args.gpl_file)
+    try:
+        if args.gpl_file.stat().st_size > MAX_BYTES:
+            print(f"{file}:1:1: file is larger than {MAX_BYTES} bytes", file=sys.stderr)
+            return 2
+        document = load_yaml(args.gpl_file.read_text(encoding="utf-8"), file)
+        imported = import_gpl(document, args.checks_module, args.adopt)
+    except (OSError, UnicodeDecodeError) as exc:
+        print(f"{file}:1:1: cannot read: {exc}", file=sys.stderr)
+        return 2
+    except SchemaError as exc:
+        print(exc, file=sys.stderr)
+        return 2
+    except GplError as exc:
+        print(f"{file}:1:1: {exc}", file=sys.stderr)
+        return 2
+    module = args.checks_module or f"{imported.name}_checks"
+    if imported.errors:
+        for problem in sorted([*imported.errors, *imported.warnings]):
+            print(problem, file=sys.stderr)
+        return 2
+    text = schema_text(imported, args.gpl_file.name)
+    target = args.output
+    if args.out_dir is not None:
+        target = args.out_dir / f"{imported.name}.yaml"
+    try:  # the result must be a schema genparams accepts, or nothing is written
+        load_schema(target or f"<{imported.name}>", text)
+    except SchemaError as exc:
+        for problem in sorted(imported.warnings):
+            print(problem, file=sys.stderr)
+        print(exc, file=sys.stderr)
+        print(f"genparams import-gpl: {file}: the imported schema is not valid", file=sys.stderr)
+        return 2
+    outputs: dict[Path, str] = {}
+    if target is not None:
+        outputs[target] = text
+        if imported.customs:
+            outputs[target.parent / f"{module.rpartition('.')[2]}.py"] = stub_text(imported, module)
+    _report(imported, module, outputs)
+    if target is None:
+        sys.stdout.write(text)
+    else:
+        write_all(outputs)
+    return 1 if imported.warnings else 0
+
+
+def _report(imported: Imported, module: str, outputs: dict[Path, str]) -> None:
+    for problem in sorted([*imported.warnings, *imported.notes]):
+        print(problem, file=sys.stderr)
+    if imported.customs:
+        stub = next((p for p in outputs if p.suffix == ".py"), None)
+        where = f"stubs in {stub}" if stub else "write them in Python"
+        names = ", ".join(sorted(imported.customs))
+        print(f"custom validators to implement in {module} ({where}): {names}", file=sys.stderr)
+    lost = imported.parameters - imported.imported
+    print(
+        f"imported {imported.imported} of {imported.parameters} parameters"
+        + (f"; {lost} left out (see warnings)" if lost else ""),
+        file=sys.stderr,
+    )

@@ -1,0 +1,1 @@
+"""Import of generate_parameter_library (GPL) parameter files into genparams schemas."""

@@ -1,0 +1,64 @@
+"""Where each key of a params file lies in a schema: dotted paths and the regexes that match them.
+
+Below a mapped group, ``*`` holds the place of an entry's key; the JSON
+Schema of a params file matches such keys with patterns.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Collection, Iterator
+
+from genparams.runtime.naming import ENTRY_KEY, ENTRY_KEY_TEXT
+from genparams.schema.model import Group, OpenNamespace, Parameter
+
+ENTRY_KEY_PATTERN = f"^{ENTRY_KEY_TEXT.pattern}$"  # the key of a mapped entry, as naming words it
+
+
+def descendants(group: Group) -> Iterator[tuple[tuple[str, ...], Group | Parameter]]:
+    """Every parameter and group below ``group``, with its path relative to ``group``.
+
+    Below a mapped group, ``*`` holds the place of an entry's key.
+    """
+    for parameter in group.parameters:
+        yield (parameter.path[-1],), parameter
+    for child in group.groups:
+        if child.in_place:  # its entries sit right here, by key
+            entry: tuple[str, ...] = (ENTRY_KEY,)
+            yield entry, child
+        else:
+            yield (child.path[-1],), child
+            entry = (child.path[-1], ENTRY_KEY) if child.mapped_over else (child.path[-1],)
+            if child.mapped_over:
+                yield entry, child
+        for path, item in descendants(child):
+            yield (*entry, *path), item
+
+
+def open_descendants(group: Group) -> Iterator[tuple[tuple[str, ...], OpenNamespace]]:
+    """Every open namespace below ``group``, with its path relative to ``group``."""
+    depth = len(group.path) + (1 if group.mapped_over else 0)
+    for namespace in group.walk_open_namespaces():
+        yield namespace.path[depth:], namespace
+
+
+def dotted_pattern(path: tuple[str, ...], beside: Collection[str] = ()) -> str:
+    """A regex for the dotted key of ``path``, with any entry key where ``*`` stands.
+
+    ``beside``: the fixed names of the namespace where a leading ``*`` (in-place
+    entries) stands; no entry key may be one of them, so no key matches both.
+    """
+    token = ENTRY_KEY_PATTERN[1:-1]
+    parts = [token if p == ENTRY_KEY else re.escape(p) for p in path]
+    if beside and path[:1] == (ENTRY_KEY,):
+        names = "|".join(re.escape(name) for name in sorted(beside))
+        parts[0] = f"(?!(?:{names})(?:\\.|$)){token}"
+    return "^" + "\\.".join(parts) + "$"
+
+
+def fixed_names(group: Group) -> set[str]:
+    """The names written directly in ``group`` (not its in-place entries' keys)."""
+    names = {p.path[-1] for p in group.parameters}
+    names.update(g.path[-1] for g in group.groups if not g.in_place)
+    names.update(n.path[-1] for n in group.open_namespaces)
+    return names

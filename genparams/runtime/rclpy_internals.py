@@ -1,0 +1,105 @@
+"""Every private rclpy attribute or behaviour genparams relies on, in one place.
+
+Checked against rclpy 7.1 (ROS 2 Jazzy). rclpy offers no public hook for what
+follows; each use says why it is needed. ``tests/runtime/test_rclpy_internals.py``
+checks every one of them against the installed rclpy, so an rclpy release that
+changes one fails there, loudly, rather than as a silent desync elsewhere.
+
+Behaviours relied on (rclpy 7.1, ``rclpy/node.py``):
+
+- ``Node._set_parameters_atomically_common(parameter_list, descriptors=None,
+  allow_not_set_type=False)`` is the one path every set, atomic set, parameter
+  service request and declaration goes through. It runs the on-set callbacks,
+  stores the values, publishes the parameter event, then calls
+  ``Node._call_post_set_parameters_callback(parameter_list)`` once.
+- ``Node._on_set_parameters_callbacks`` is a list run front to back;
+  ``add_on_set_parameters_callback`` inserts at the front, so newer callbacks
+  run first and a callback appended at the end runs after every other one.
+- ``Node._post_set_parameters_callbacks`` likewise: newest first.
+- Pre-set callbacks run in ``Node._set_parameters_atomically`` before the
+  common path, so outside genparams' per-node lock.
+- ``Node.undeclare_parameter`` deletes from ``_parameters`` and ``_descriptors``
+  without calling any callback.
+- ``Node._parameter_overrides``: the values a node was started with.
+- ``rclpy.lifecycle.Node._state_machine.current_state`` is ``(id, label)``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping, Sequence
+from typing import Any
+
+from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
+from rclpy.node import Node
+from rclpy.parameter import Parameter
+
+RCLPY_CHECKED = "7.1"  # the rclpy release (Jazzy) these internals were read in
+
+SetPath = Callable[..., SetParametersResult]
+PostSet = Callable[[Sequence[Parameter]], None]
+OnSet = Callable[[list[Parameter]], SetParametersResult]
+
+
+def set_path(node: Node) -> SetPath:
+    """The node's common set path (bound method, or a wrapper already installed)."""
+    return node._set_parameters_atomically_common
+
+
+def replace_set_path(node: Node, wrapper: SetPath) -> None:
+    """Route every set of ``node`` through ``wrapper``; an instance attribute shadows the method."""
+    node._set_parameters_atomically_common = wrapper  # type: ignore[method-assign]
+
+
+def post_set_caller(node: Node) -> PostSet:
+    """What the set path calls once the node stored the values: it runs the post-set callbacks."""
+    return node._call_post_set_parameters_callback
+
+
+def replace_post_set_caller(node: Node, wrapper: PostSet) -> None:
+    node._call_post_set_parameters_callback = wrapper  # type: ignore[method-assign, assignment]
+
+
+def add_last_on_set_callback(node: Node, callback: OnSet) -> None:
+    """Run ``callback`` after every other on-set callback, including ones added later."""
+    node._on_set_parameters_callbacks.append(callback)
+
+
+def on_set_callbacks(node: Node) -> tuple[OnSet, ...]:
+    callbacks: list[OnSet] = list(node._on_set_parameters_callbacks)
+    return tuple(callbacks)
+
+
+def replace_undeclare(node: Node, wrapper: Callable[[str], None]) -> Callable[[str], None]:
+    """Shadow ``node.undeclare_parameter`` (which runs no callback); returns the original."""
+    original: Callable[[str], None] = node.undeclare_parameter
+    node.undeclare_parameter = wrapper  # type: ignore[method-assign, assignment]
+    return original
+
+
+def declare_with_descriptors(
+    node: Node, parameters: Sequence[Parameter], descriptors: Mapping[str, ParameterDescriptor]
+) -> None:
+    """Declare with exact types: Node.declare_parameters infers the type from the value
+    (an empty list becomes BYTE_ARRAY); this path keeps the declared one."""
+    node._declare_parameter_common(list(parameters), dict(descriptors))
+
+
+def set_with_descriptors(
+    node: Node, parameters: Sequence[Parameter], descriptors: Mapping[str, ParameterDescriptor]
+) -> SetParametersResult:
+    """One atomic change that may declare (new descriptors) and undeclare (NOT_SET) together."""
+    return set_path(node)(list(parameters), dict(descriptors))
+
+
+def parameter_overrides(node: Node) -> dict[str, Parameter]:
+    """The values the node was started with (-p, params files, launch)."""
+    overrides: dict[str, Parameter] = getattr(node, "_parameter_overrides", {})
+    return overrides
+
+
+def lifecycle_state(node: Node) -> str | None:
+    """The label of a lifecycle node's current state ("inactive", ...); None for a plain node."""
+    machine: Any = getattr(node, "_state_machine", None)
+    if machine is None:
+        return None
+    return str(machine.current_state[1])

@@ -1,0 +1,161 @@
+"""The validator table: how each validator is spelled, what it applies to, how it is built.
+
+Parses and checks a validator's argument from a schema (or from generated
+code) and builds the validator object from ``validators``. Pure Python, like
+the validators themselves.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+import regex as regex_engine
+
+from genparams.runtime.validators import (
+    ALL_TYPES,
+    ARRAYS,
+    NUMERIC,
+    NUMERIC_ARRAYS,
+    SIZED,
+    Bounds,
+    Compare,
+    Custom,
+    Length,
+    NotEmpty,
+    OneOf,
+    Pattern,
+    SubsetOf,
+    Unique,
+    Validator,
+    fmt,
+)
+
+
+@dataclass(frozen=True)
+class ValidatorKind:
+    """How one validator is spelled in a schema, what it applies to, how it is built."""
+
+    name: str
+    applies_to: frozenset[str]
+    build: Callable[[Any, str], Validator]  # (argument, parameter type) -> validator
+    takes_argument: bool = True
+
+
+class ValidatorArgumentError(ValueError):
+    pass
+
+
+def _number(arg: Any, what: str) -> float:
+    if isinstance(arg, bool) or not isinstance(arg, (int, float)):
+        raise ValidatorArgumentError(f"{what} must be a number, got {fmt(arg)}")
+    if isinstance(arg, float) and math.isnan(arg):
+        raise ValidatorArgumentError(f"{what} must be a number, not NaN (nothing compares to NaN)")
+    return arg
+
+
+def _pair(arg: Any, what: str) -> tuple[float, float]:
+    if not isinstance(arg, (list, tuple)) or len(arg) != 2:
+        raise ValidatorArgumentError(f"{what} takes [low, high], got {fmt(arg)}")
+    low, high = _number(arg[0], f"{what} low"), _number(arg[1], f"{what} high")
+    if low > high:
+        raise ValidatorArgumentError(f"{what} low {low!r} is greater than high {high!r}")
+    return low, high
+
+
+def _choices(arg: Any, what: str) -> tuple[Any, ...]:
+    if not isinstance(arg, (list, tuple)) or not arg:
+        raise ValidatorArgumentError(f"{what} takes a non-empty list, got {fmt(arg)}")
+    return tuple(arg)
+
+
+def _length(arg: Any, _type: str) -> Length:
+    if isinstance(arg, int) and not isinstance(arg, bool):
+        if arg < 0:
+            raise ValidatorArgumentError(f"length must be >= 0, got {arg}")
+        return Length(arg, arg)
+    if isinstance(arg, dict) and arg and set(arg) <= {"min", "max", "exact"}:
+        for key, item in arg.items():
+            if isinstance(item, bool) or not isinstance(item, int) or item < 0:
+                raise ValidatorArgumentError(f"length {key} must be an integer >= 0")
+        if "exact" in arg:
+            if len(arg) > 1:
+                raise ValidatorArgumentError("length takes exact, or min and/or max, not both")
+            return Length(arg["exact"], arg["exact"])
+        low, high = arg.get("min"), arg.get("max")
+        if low is not None and high is not None and low > high:
+            raise ValidatorArgumentError(f"length min {low} is greater than max {high}")
+        return Length(low, high)
+    raise ValidatorArgumentError(f"length takes an integer or {{min, max, exact}}, got {fmt(arg)}")
+
+
+def _pattern(arg: Any, _type: str) -> Pattern:
+    if not isinstance(arg, str):
+        raise ValidatorArgumentError(f"pattern must be a string, got {fmt(arg)}")
+    try:
+        return Pattern(arg)
+    except (re.error, regex_engine.error) as exc:
+        raise ValidatorArgumentError(f"pattern {arg!r} is not a valid regex: {exc}") from None
+
+
+_CUSTOM_TARGET = re.compile(r"[A-Za-z_][\w]*(\.[A-Za-z_][\w]*)*:[A-Za-z_]\w*")
+
+
+def _custom(arg: Any, _type: str) -> Custom:
+    """``'pkg.mod:function'``, or ``{function: 'pkg.mod:function', args: [...]}``."""
+    target, args = arg, ()
+    if isinstance(arg, dict) and set(arg) <= {"function", "args"} and "function" in arg:
+        target, args = arg["function"], arg.get("args", ())
+        if not isinstance(args, (list, tuple)):
+            raise ValidatorArgumentError(f"custom args must be a list, got {fmt(args)}")
+    if not isinstance(target, str) or not _CUSTOM_TARGET.fullmatch(target):
+        raise ValidatorArgumentError(
+            "custom takes 'package.module:function' or "
+            f"{{function: 'package.module:function', args: [...]}}, got {fmt(arg)}"
+        )
+    return Custom(target, tuple(args))
+
+
+def _compare(rule: str, arg: Any) -> Compare:
+    # Called per schema entry, not once at import, so the tests exercise (and mutate) it.
+    return Compare(rule, _number(arg, rule))
+
+
+KINDS: dict[str, ValidatorKind] = {
+    k.name: k
+    for k in (
+        ValidatorKind("gt", NUMERIC, lambda a, _t: _compare("gt", a)),
+        ValidatorKind("ge", NUMERIC, lambda a, _t: _compare("ge", a)),
+        ValidatorKind("lt", NUMERIC, lambda a, _t: _compare("lt", a)),
+        ValidatorKind("le", NUMERIC, lambda a, _t: _compare("le", a)),
+        ValidatorKind("bounds", NUMERIC, lambda a, _t: Bounds(*_pair(a, "bounds"))),
+        ValidatorKind(
+            "element_bounds",
+            NUMERIC_ARRAYS,
+            lambda a, _t: Bounds(*_pair(a, "element_bounds"), each=True, rule="element_bounds"),
+        ),
+        ValidatorKind(
+            "one_of",
+            frozenset({"int", "double", "string"}),
+            lambda a, _t: OneOf(_choices(a, "one_of")),
+        ),
+        ValidatorKind(
+            "subset_of",
+            frozenset({"int_array", "double_array", "string_array"}),
+            lambda a, _t: SubsetOf(_choices(a, "subset_of")),
+        ),
+        ValidatorKind("not_empty", SIZED, lambda _a, _t: NotEmpty(), takes_argument=False),
+        ValidatorKind("unique", ARRAYS, lambda _a, _t: Unique(), takes_argument=False),
+        ValidatorKind("length", SIZED, _length),
+        ValidatorKind("pattern", frozenset({"string", "string_array"}), _pattern),
+        ValidatorKind("custom", ALL_TYPES, _custom),
+    )
+}
+
+
+def build_validator(rule: str, argument: Any, param_type: str) -> Validator:
+    """Build one validator; raises ValidatorArgumentError or KeyError for unknown rules."""
+    return KINDS[rule].build(argument, param_type)

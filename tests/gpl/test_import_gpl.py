@@ -1,0 +1,183 @@
+"""`genparams import-gpl`: the command, its messages and exit codes, and golden imports.
+
+Update the golden files after an intended change: python -m tests.gpl.test_import_gpl
+"""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from genparams.cli import main
+from tests.gpl.corpus_cases import CORPUS
+
+GOLDEN = Path(__file__).parent / "golden"
+RC = CORPUS / "ros2_controllers"
+# A handful of real schemas covering every construct the import maps.
+CASES = {
+    "joint_trajectory_controller": RC / "joint_trajectory_controller/schema/"
+    "joint_trajectory_controller_parameters.yaml",  # map beside parameters, custom validators
+    "battery_state_broadcaster": RC / "battery_state_broadcaster/schema/"
+    "battery_state_broadcaster_parameters.yaml",  # map at the top level, NaN defaults
+    "chained_filter": RC / "chained_filter_controller/schema/chained_filter_parameters.yaml",
+    "diff_drive_controller": RC / "diff_drive_controller/schema/"
+    "diff_drive_controller_parameter.yaml",  # custom validators with arguments
+    "controller_manager": CORPUS / "ros2_control/controller_manager/schema/"
+    "controller_manager_parameters.yaml",  # `defaults` namespace, required parameters
+    "admittance_controller": CORPUS / "generate_parameter_library/example/schema/parameters.yaml",
+}
+
+
+def run(capsys: pytest.CaptureFixture[str], *args: str) -> tuple[int, str, str]:
+    code = main(["import-gpl", *args])
+    captured = capsys.readouterr()
+    return code, captured.out, captured.err
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_import_matches_golden(
+    name: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    code, _, err = run(capsys, str(CASES[name]), "--out-dir", str(tmp_path))
+    assert code == 0, err
+    written = sorted(p.name for p in tmp_path.iterdir())
+    expected = sorted(p.name for p in GOLDEN.glob(f"{name}*"))
+    assert written == expected
+    for file in written:
+        assert (tmp_path / file).read_text("utf-8") == (GOLDEN / file).read_text("utf-8"), file
+
+
+def test_report_lists_custom_validators_and_required_parameters(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    code, _, err = run(capsys, str(CASES["diff_drive_controller"]), "-o", str(tmp_path / "d.yaml"))
+    assert code == 0
+    source = CASES["diff_drive_controller"]
+    assert (
+        f"{source}:4:5: diff_drive_controller.left_wheel_names.default_value: note: default [] "
+        "breaks its own validator (must not be empty (not_empty)): imported as a required "
+        "parameter"
+    ) in err.splitlines()
+    assert (
+        "custom validators to implement in diff_drive_controller_checks (stubs in "
+        f"{tmp_path / 'diff_drive_controller_checks.py'}): gt_eq_or_nan, lt_eq_or_nan"
+    ) in err
+    assert err.rstrip().endswith("imported 44 of 44 parameters")
+
+
+def test_stdout_when_no_output_is_given(capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, _ = run(capsys, str(CASES["chained_filter"]))
+    assert code == 0
+    assert out == (GOLDEN / "chained_filter.yaml").read_text("utf-8")
+
+
+def test_what_cannot_be_mapped_is_a_warning_at_its_place(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = tmp_path / "gpl.yaml"
+    source.write_text(
+        "ctrl:\n"
+        "  joints: {type: string_array, default_value: [a]}\n"
+        "  gains:\n"
+        "    __map_joints:\n"
+        "      p: {type: double, default_value: 1.0}\n"
+        "    __map_joints2:\n"
+        "      i: {type: double, default_value: 1.0}\n"
+        "  odd: {type: quaternion, default_value: 1}\n"
+        "  lim: {type: double_array, default_value: [1.0], validation: {gt<>: [0.0]}}\n"
+        "  rate: {type: double, default_value: 1.0, unit: Hz}\n",
+        encoding="utf-8",
+    )
+    out = tmp_path / "ctrl.yaml"
+    code, _, err = run(capsys, str(source), "-o", str(out))
+    assert code == 1  # written, but something was left out
+    assert err.splitlines()[:4] == [
+        f"{source}:6:5: ctrl.gains.__map_joints2: warning: a second map in one namespace: ROS "
+        "names could not tell the two maps' entries apart; its parameters are left out",
+        f"{source}:8:9: ctrl.odd.type: warning: unknown type 'quaternion': parameter left out",
+        f"{source}:9:64: ctrl.lim.validation.gt<>: warning: gt on an array has no genparams form "
+        "(strict bound): validator left out",
+        f"{source}:10:44: ctrl.rate.unit: warning: unknown GPL key 'unit': left out",
+    ]
+    assert err.rstrip().endswith("imported 4 of 6 parameters; 2 left out (see warnings)")
+    assert "gains:\n    for_each: joints\n    p:" in out.read_text("utf-8")
+
+
+@pytest.mark.parametrize(
+    "text, message",
+    [
+        ("a: 1\nb: 2\n", "exactly one top-level key"),
+        ("a: [1]\n", "does not hold parameters"),
+        ("a: {b: 1\n", "expected ',' or '}'"),
+    ],
+)
+def test_bad_input_exits_2_and_writes_nothing(
+    text: str, message: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = tmp_path / "bad.yaml"
+    source.write_text(text, encoding="utf-8")
+    code, out, err = run(capsys, str(source), "--out-dir", str(tmp_path / "out"))
+    assert (code, out) == (2, "")
+    assert message in err and err.startswith(str(source))
+    assert not (tmp_path / "out").exists()
+
+
+def test_adopt_marks_the_parameter(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    target = tmp_path / "cm.yaml"
+    code, _, _ = run(
+        capsys, str(CASES["controller_manager"]), "-o", str(target), "--adopt",
+        "overruns.print_warnings",
+    )  # fmt: skip
+    assert code == 0
+    assert "  overruns:\n    print_warnings:\n      type: bool\n" in target.read_text("utf-8")
+    assert "      adopt: true\n" in target.read_text("utf-8")
+
+
+def test_runs_as_a_command() -> None:
+    result = subprocess.run(
+        [sys.executable, "-m", "genparams", "import-gpl", str(CASES["chained_filter"])],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert result.returncode == 0 and result.stdout.startswith("# genparams schema imported")
+
+
+def write_goldens() -> None:
+    GOLDEN.mkdir(exist_ok=True)
+    for old in GOLDEN.iterdir():
+        old.unlink()
+    for source in CASES.values():
+        main(["import-gpl", str(source), "--out-dir", str(GOLDEN)])
+
+
+if __name__ == "__main__":
+    write_goldens()
+
+
+INVALID = CORPUS / "generate_parameter_library/generate_parameter_library_py_test/schema_invalid"
+
+
+@pytest.mark.parametrize(
+    "name, first_line",
+    [
+        ("wrong_default_type", "4:20: namespace.param_name.default_value: wrong default: "
+         "expected double, got string 'string type'"),
+        ("invalid_parameter_type", "3:5: namespace.param_name.type: warning: unknown type "
+         "'string_non-type': parameter left out"),
+        ("missing_type", "3:5: namespace.param_name.description: warning: neither a parameter "
+         "(no type:) nor a namespace: left out"),
+        ("invalid_syntax", "5:3: invalid YAML: while parsing a block mapping did not find "
+         "expected key"),
+    ],
+)  # fmt: skip
+def test_files_gpl_refuses_are_refused_at_their_place(
+    name: str, first_line: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = INVALID / f"{name}.yaml"
+    code, out, err = run(capsys, str(source), "--out-dir", str(tmp_path))
+    assert (code, out, list(tmp_path.iterdir())) == (2, "", [])
+    assert err.splitlines()[0] == f"{source}:{first_line}"
