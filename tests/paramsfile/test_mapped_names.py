@@ -47,10 +47,11 @@ def test_entry_of_an_unlisted_key_is_a_warning(
 def test_a_key_no_entry_can_have_is_an_error(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    assert check(tmp_path, "    control.gains.bad!key.p: 1.0\n", capsys) == (
+    assert check(tmp_path, "    control.gains.bad*key.p: 1.0\n", capsys) == (
         1,
-        "params.yaml:3:5: control.gains.bad!key.p: unknown parameter: 'bad!key' cannot be an "
-        "item of joints (use letters, digits, '_' and '-'): no entry would ever have this name\n",
+        "params.yaml:3:5: control.gains.bad*key.p: unknown parameter: 'bad*key' cannot be an "
+        "item of joints (use any text but '.', '*', spaces and control characters): no entry would "
+        "ever have this name\n",
     )
 
 
@@ -93,13 +94,14 @@ def test_entries_of_nested_groups_name_every_key(
     schema = tmp_path / "nest.yaml"
     schema.write_text(NESTED, encoding="utf-8")
     params = tmp_path / "params.yaml"
-    lines = "    gains.b.sub.y.p: 2.0\n    gains.c.sub.y!.p: 2.0\n"
+    lines = "    gains.b.sub.y.p: 2.0\n    gains.c.sub.y*.p: 2.0\n"
     params.write_text("/**:\n  ros__parameters:\n" + lines, encoding="utf-8")
     assert main(["check-params", str(schema), str(params)]) == 1
     out = capsys.readouterr()
     assert (out.out + out.err).replace(str(params), "params.yaml") == (
-        "params.yaml:4:5: gains.c.sub.y!.p: unknown parameter: 'y!' cannot be an item of links "
-        "(use letters, digits, '_' and '-'): no entry would ever have this name\n"
+        "params.yaml:4:5: gains.c.sub.y*.p: unknown parameter: 'y*' cannot be an item of links "
+        "(use any text but '.', '*', spaces and control characters): no entry would ever have "
+        "this name\n"
         "params.yaml:3:5: gains.b.sub.y.p: warning: 'b.y' is not among the items of joints, "
         "links; the node uses this only once they hold it\n"
     )

@@ -2,8 +2,8 @@
 
 A set to the value a parameter already holds changes nothing and notifies no
 one (equal, not identical: every set carries a fresh object). A set another
-on-set callback vetoes after genparams accepted it must leave ``cfg`` as it
-was: values are committed only from the post-set callback.
+on-set callback vetoes must leave ``cfg`` as it was: genparams checks after every
+other on-set callback and commits only once the node has stored the values.
 """
 
 from __future__ import annotations
@@ -68,8 +68,8 @@ def test_a_mixed_set_reports_only_what_changed(ros: RosHarness, module: types.Mo
 def test_a_veto_after_genparams_accepted_leaves_cfg_unchanged(
     ros: RosHarness, module: types.ModuleType
 ) -> None:
-    """rclpy runs the callback added last first: adding the veto before declaring makes
-    it run after genparams' own check accepted the value."""
+    """genparams checks last and commits only once the node stored the values: a veto
+    by another on-set callback leaves cfg, snapshots and subscribers untouched."""
     node = ros.node(args=SERIAL)
     calls: list[str] = []
 
@@ -98,25 +98,24 @@ def test_a_veto_after_genparams_accepted_leaves_cfg_unchanged(
     assert [(c.name, c.new) for c in seen[0]] == [("camera.width", 800)]
 
 
-def test_genparams_check_runs_before_a_later_veto(
+def test_genparams_checks_after_every_other_callback(
     ros: RosHarness, module: types.ModuleType
 ) -> None:
-    """The veto above really ran after genparams: a value genparams refuses never reaches it."""
+    """A callback added after declare still runs before genparams' check, so the check
+    judges the request last, against the node's current state."""
     node = ros.node(args=SERIAL)
-    calls: list[str] = []
-
-    def veto(parameters: list[Parameter]) -> SetParametersResult:
-        if not calls:  # armed only after declaring: declarations pass through it too
-            return SetParametersResult(successful=True)
-        calls.append("veto")
-        return SetParametersResult(successful=False, reason="vetoed by safety")
-
-    node.add_on_set_parameters_callback(veto)
     module.CameraDriverParams.declare(node)
-    calls.append("armed")
+    seen: list[str] = []
+
+    def observer(parameters: list[Parameter]) -> SetParametersResult:
+        seen.extend(p.name for p in parameters)
+        return SetParametersResult(successful=True)
+
+    node.add_on_set_parameters_callback(observer)
     (result,) = ros.client(node).set(Parameter("control.pid.kp", value=-1.0))
     assert result.reason == "control.pid.kp: must be >= 0.0 (ge), got -1.0"
-    assert calls == ["armed"]
+    assert seen == ["control.pid.kp"]
+    assert node.get_parameter("control.pid.kp").value == 1.0
 
 
 def test_a_subscriber_that_raises_is_logged_and_the_others_still_hear(
@@ -152,23 +151,6 @@ def test_snapshots_taken_after_a_set_are_still_detached(
     assert frozen.snapshot() is frozen
     with pytest.raises(DetachedSnapshotError):
         frozen.on_change(print)
-
-
-def test_post_set_of_a_request_checked_before_another_commits_its_own_values(
-    ros: RosHarness, module: types.ModuleType
-) -> None:
-    """Two requests interleaved between on-set and post-set (as concurrent sets can be):
-    each post-set commits the values of its own request, never the last one checked."""
-    node = ros.node(args=SERIAL)
-    cfg = module.CameraDriverParams.declare(node)
-    binding = cfg._binding
-    first = [Parameter("camera.fps", value=12.0)]
-    second = [Parameter("camera.width", value=800)]
-    assert binding.on_set(first).successful and binding.on_set(second).successful
-    binding.on_post_set(first)
-    assert (cfg.camera.fps, cfg.camera.width) == (12.0, 640)
-    binding.on_post_set(second)
-    assert (cfg.camera.fps, cfg.camera.width) == (12.0, 800)
 
 
 def test_every_problem_of_a_request_is_named(ros: RosHarness, module: types.ModuleType) -> None:
