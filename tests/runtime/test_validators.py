@@ -8,6 +8,7 @@ from typing import Any
 
 import pytest
 
+from genparams.runtime.validator_kinds import ValidatorArgumentError, build_validator
 from genparams.runtime.validators import (
     Bounds,
     Compare,
@@ -19,9 +20,12 @@ from genparams.runtime.validators import (
     RosRange,
     SubsetOf,
     Unique,
-    ValidatorArgumentError,
-    build_validator,
     first_failure,
+)
+
+# How a bad custom argument is answered: both spellings the schema accepts.
+CUSTOM_FORMS = (
+    "custom takes 'package.module:function' or {function: 'package.module:function', args: [...]}"
 )
 
 # Functions for Custom, found by module path like a schema's `custom: module:function`.
@@ -195,9 +199,9 @@ def test_build_validator(rule: str, argument: Any, param_type: str, built: objec
         ),
         ("length", True, "length takes an integer or {min, max, exact}, got True"),
         ("pattern", 5, "pattern must be a string, got 5"),
-        ("custom", "no_colon", "custom takes 'package.module:function', got 'no_colon'"),
-        ("custom", 3, "custom takes 'package.module:function', got 3"),
-        ("custom", "a.b:c.d", "custom takes 'package.module:function', got 'a.b:c.d'"),
+        ("custom", "no_colon", f"{CUSTOM_FORMS}, got 'no_colon'"),
+        ("custom", 3, f"{CUSTOM_FORMS}, got 3"),
+        ("custom", "a.b:c.d", f"{CUSTOM_FORMS}, got 'a.b:c.d'"),
     ],
 )
 def test_bad_arguments_say_why(rule: str, argument: Any, message: str) -> None:
