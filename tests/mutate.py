@@ -16,12 +16,17 @@ Survivors that no test can kill (equivalent mutants) or that are accepted are
 listed with the reason in tests/mutation_accepted.txt; ``report`` fails only on
 a survivor missing from it. ``sample`` (CI) draws from the mutants the last full
 run killed (tests/mutation_killed.txt): one that survives now means a test got weaker.
+Each recorded kill carries the hash of its function as mutmut saw it; a mutant whose
+function is gone or has changed since (mutmut numbers its mutants anew) is not drawn,
+so a code change never fails ``sample`` by itself, it only shrinks what can be drawn
+until ``baseline`` is run again.
 """
 
 from __future__ import annotations
 
 import json
 import random
+import shutil
 import subprocess
 import sys
 from collections import Counter
@@ -46,6 +51,9 @@ CORE = (
     "genparams.paramsfile.ros_yaml",
 )
 PACKAGES = ("genparams/runtime", "genparams/paramsfile")
+# Copied into mutants/ by every mutmut run, merged into what is already there: removed
+# first so a test file deleted or moved here does not linger there and break collection.
+COPIES = ("tests", "examples", "schemas", "templates")
 
 STATUS = {1: "killed", 3: "killed", 0: "survived", 5: "no tests", 33: "no tests", 37: "typed"}
 TIMEOUTS = {24, -24, 152, 255, 36}
@@ -69,12 +77,30 @@ def all_modules() -> list[str]:
     return [*CORE, *(name for name in names if name not in CORE)]
 
 
-def results(module: str) -> dict[str, int | None]:
+def _meta(module: str) -> dict[str, dict[str, object]]:
     meta = MUTANTS / (module.replace(".", "/") + ".py.meta")
     if not meta.exists():
         return {}
-    codes: dict[str, int | None] = json.loads(meta.read_text(encoding="utf-8"))["exit_code_by_key"]
+    data: dict[str, dict[str, object]] = json.loads(meta.read_text(encoding="utf-8"))
+    return data
+
+
+def results(module: str) -> dict[str, int | None]:
+    codes: dict[str, int | None] = dict(_meta(module).get("exit_code_by_key", {}))  # type: ignore[arg-type]
     return codes
+
+
+def function_hashes() -> dict[str, str]:
+    """Mutant name -> hash of the function it changes, as mutmut last generated it."""
+    out = {}
+    for module in all_modules():
+        meta = _meta(module)
+        hashes = meta.get("hash_by_function_name", {})
+        for name in meta.get("exit_code_by_key", {}):
+            function = name[len(module) + 1 :].rpartition("__mutmut_")[0]
+            if function in hashes:
+                out[name] = str(hashes[function])
+    return out
 
 
 def accepted() -> dict[str, str]:
@@ -148,6 +174,8 @@ cli.main(args=sys.argv[1:], standalone_mode=False)
 def mutmut_run(names: list[str], cap: int | None = MAX_TESTS_PER_MUTANT) -> None:
     """``mutmut run NAMES`` (mutmut reads its config from pyproject.toml in the cwd)."""
     if names:
+        for copy in COPIES:
+            shutil.rmtree(MUTANTS / copy, ignore_errors=True)
         code = ORDERED_RUN.replace("OWN_TESTS", repr(OWN_TESTS)).replace(
             "MAX_TESTS_PER_MUTANT", str(cap or 1_000_000)
         )
@@ -158,6 +186,8 @@ def mutmut_run(names: list[str], cap: int | None = MAX_TESTS_PER_MUTANT) -> None
 def generate() -> None:
     """Create or refresh mutants/ (mutmut does it as part of any run; this one runs nothing)."""
     if not MUTANTS.exists() or not any(results(m) for m in CORE):
+        for copy in COPIES:
+            shutil.rmtree(MUTANTS / copy, ignore_errors=True)
         subprocess.run([*MUTMUT, "run", "genparams.runtime.changes*"], cwd=ROOT, check=False)
 
 
@@ -200,25 +230,41 @@ def report() -> int:
 
 
 def baseline() -> int:
+    """Record every mutant now killed, with the hash of its function (see ``sample``)."""
+    hashes = function_hashes()
     killed = sorted(
         name
         for module in all_modules()
         for name, code in results(module).items()
-        if status(code) in ("killed", "timeout")
+        if status(code) in ("killed", "timeout") and name in hashes
     )
-    KILLED.write_text("".join(f"{name}\n" for name in killed), encoding="utf-8")
+    KILLED.write_text("".join(f"{name} {hashes[name]}\n" for name in killed), encoding="utf-8")
     print(f"{len(killed)} killed mutants recorded in {KILLED.relative_to(ROOT)}")
     return 0
 
 
 def sample(size: int, seed: int) -> int:
     """Run ``size`` mutants the last full run killed; one that survives now fails."""
+    recorded = {}  # a line without a hash (an older baseline) is never drawn
+    for line in KILLED.read_text(encoding="utf-8").splitlines():
+        name, _, function_hash = line.strip().partition(" ")
+        if name:
+            recorded[name] = function_hash or None
+    if not any(recorded.values()):
+        print(f"{KILLED.name} records no function hashes: run `make mutate`, then `baseline`")
+        return 1  # nothing could be drawn: a green run here would check nothing
     generate()
-    recorded = KILLED.read_text(encoding="utf-8").split()
-    known = {n: c for module in all_modules() for n, c in results(module).items()}
-    chosen = random.Random(seed).sample(
-        sorted(n for n in recorded if n in known), min(size, len(recorded))
-    )
+    current = function_hashes()
+    # Only mutants of functions unchanged since the baseline: the same name in a changed
+    # function is another mutation, which the baseline says nothing about.
+    drawable = sorted(n for n, h in recorded.items() if current.get(n) == h)
+    stale = len(recorded) - len(drawable)
+    if stale:
+        print(f"{stale} of {len(recorded)} recorded kills are of changed or removed functions")
+    if not drawable:
+        print("nothing to draw: run `make mutate` then `python -m tests.mutate baseline`")
+        return 0
+    chosen = random.Random(seed).sample(drawable, min(size, len(drawable)))
     mutmut_run(chosen)
     codes = {n: c for module in all_modules() for n, c in results(module).items()}
     counts = Counter(status(codes[n]) for n in chosen)
