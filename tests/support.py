@@ -81,17 +81,16 @@ class RosHarness:
 class ServiceClient:
     """What `ros2 param` sees: calls through the node's parameter services."""
 
-    def __init__(self, harness: RosHarness, target: str) -> None:
+    def __init__(self, harness: RosHarness, target: str, timeout: float = 30.0) -> None:
         self.harness = harness
         self.client = AsyncParameterClient(harness.client_node, target)
-        deadline_ok = False
-        for _ in range(100):
-            if self.client.services_are_ready():
-                deadline_ok = True
-                break
+        # By the clock: spin_once returns early whenever any callback ran, so a count
+        # of spins is no timeout on a busy graph.
+        deadline = time.monotonic() + timeout
+        while not self.client.services_are_ready():
+            if time.monotonic() > deadline:
+                raise TimeoutError(f"parameter services of {target} did not appear")
             harness.executor.spin_once(timeout_sec=0.1)
-        if not deadline_ok:
-            raise TimeoutError(f"parameter services of {target} did not appear")
         self._first_answer(target)
 
     def _first_answer(self, target: str, timeout: float = 30.0) -> None:

@@ -10,9 +10,7 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import Any
 
-from rclpy.parameter_client import AsyncParameterClient
-
-from tests.support import ROOT, RosHarness, ServiceClient
+from tests.support import ROOT
 
 CHROMIUM = "/usr/bin/chromium"
 CHROMIUM_ARGS = [
@@ -66,23 +64,3 @@ def eventually(probe: Callable[[], Any], timeout: float = 10.0, interval: float 
         if time.monotonic() > deadline:
             raise AssertionError(f"condition not met within {timeout} s (last: {value!r})")
         time.sleep(interval)
-
-
-def service_client(harness: RosHarness, target: str, timeout: float = 30.0) -> ServiceClient:
-    """A parameter-service client of ``target`` once its services answer.
-
-    Waits by the clock: spin_once returns early whenever any callback ran, so a
-    count of spins is no timeout on a busy graph.
-    """
-    probe = AsyncParameterClient(harness.client_node, target)
-    try:
-        deadline = time.monotonic() + timeout
-        while not probe.services_are_ready():
-            if time.monotonic() > deadline:
-                raise TimeoutError(f"parameter services of {target} did not appear")
-            harness.executor.spin_once(timeout_sec=0.05)
-    finally:
-        for client in vars(probe).values():
-            if hasattr(client, "srv_name"):
-                harness.client_node.destroy_client(client)
-    return ServiceClient(harness, target)

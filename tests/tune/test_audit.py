@@ -16,8 +16,8 @@ from genparams.audit.deployment import read_deployment
 from genparams.audit.findings import DRIFT_DEFAULT, DRIFT_FILE, NO_SCHEMA, VIOLATION
 from genparams.audit.walk import AuditResult, audit
 from genparams.tune.graph import Graph
-from tests.support import ROOT, RosHarness
-from tests.tune.support import demo_nodes, service_client, unique
+from tests.support import ROOT, RosHarness, ServiceClient
+from tests.tune.support import demo_nodes, unique
 
 LOOSE, PLAIN, CAM, ARM = (f"/{unique(f'audit_{s}')}" for s in ("loose", "plain", "cam", "arm"))
 NODES = (LOOSE, PLAIN, CAM, ARM)
@@ -30,7 +30,7 @@ def running(ros_harness: RosHarness) -> Iterator[None]:
         demo_nodes(f"{CAM[1:]}:camera", f"{ARM[1:]}:arm"),
     ):
         # A value the schema forbids, set through the services as `ros2 param set` would.
-        loose = service_client(ros_harness, LOOSE)
+        loose = ServiceClient(ros_harness, LOOSE)
         results = loose.set(Parameter("max_speed", value=7.0), Parameter("weights", value=[0.5]))
         assert all(r.successful for r in results)
         yield

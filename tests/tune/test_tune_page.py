@@ -20,7 +20,6 @@ from tests.tune.support import (
     CHROMIUM_ARGS,
     demo_nodes,
     eventually,
-    service_client,
     unique,
 )
 
@@ -83,7 +82,7 @@ _CLIENTS: dict[str, ServiceClient] = {}
 def client(ros_harness: RosHarness, node: str) -> ServiceClient:
     """One client per node for the module: each opens six service clients."""
     if node not in _CLIENTS:
-        _CLIENTS[node] = service_client(ros_harness, node)
+        _CLIENTS[node] = ServiceClient(ros_harness, node)
     return _CLIENTS[node]
 
 
