@@ -5,6 +5,7 @@
     python -m tests.mutate report               # score per module, survivors not accepted
     python -m tests.mutate baseline             # record the killed mutants for `sample`
     python -m tests.mutate sample [N [SEED]]    # N recorded kills run afresh; fail on a survivor
+    python -m tests.mutate typecheck mypy       # (mutmut's type_check_command, in mutants/)
 
 mutmut (configured in pyproject.toml, [tool.mutmut]) copies the package into
 mutants/, records which tests call each function, and runs each mutant against
@@ -25,7 +26,9 @@ until ``baseline`` is run again.
 from __future__ import annotations
 
 import json
+import os
 import random
+import re
 import shutil
 import subprocess
 import sys
@@ -36,6 +39,9 @@ ROOT = Path(__file__).resolve().parent.parent
 MUTANTS = ROOT / "mutants"
 ACCEPTED = ROOT / "tests" / "mutation_accepted.txt"
 KILLED = ROOT / "tests" / "mutation_killed.txt"
+# Tests run once per mutant: property tests try a tenth as many examples (tests/budget.py).
+MUTATE_ENV = {"GENPARAMS_TEST_PROFILE": "mutate"}
+KILLERS = MUTANTS / "killers.txt"  # mutant, then the test that failed first under it
 MUTMUT = [sys.executable, "-m", "mutmut"]
 
 # The modules whose every change of behaviour a test must catch, first.
@@ -153,7 +159,7 @@ ORDERED_RUN = """
 import os, sys
 from mutmut.runners import harness
 from mutmut.state import state
-own_tests, cap = OWN_TESTS, MAX_TESTS_PER_MUTANT
+own_tests, cap, killers = OWN_TESTS, MAX_TESTS_PER_MUTANT, KILLERS
 plain = harness.PytestRunner._pytest_args_regular_run
 def ordered(self, tests):
     mutant = os.environ.get("MUTANT_UNDER_TEST", "")
@@ -165,7 +171,20 @@ def ordered(self, tests):
         return (not test.startswith(own), durations.get(test, 0.0), test)
     tests = sorted(tests, key=key)
     return plain(self, tests[:cap] if mutant and tests else tests)
+class Killer:  # records the test that failed first under a mutant, for `sample`
+    def __init__(self, mutant):
+        self.mutant = mutant
+    def pytest_runtest_logreport(self, report):
+        if report.failed and self.mutant:
+            with open(killers, "a", encoding="utf-8") as out:
+                out.write(self.mutant + " " + report.nodeid + "\\n")
+            self.mutant = ""
+def run_tests(self, *, mutant_name, tests):
+    with harness.change_cwd("mutants"):
+        args = self._pytest_args_regular_run(tests)
+        return int(self.execute_pytest(args, plugins=[Killer(mutant_name)]))
 harness.PytestRunner._pytest_args_regular_run = ordered
+harness.PytestRunner.run_tests = run_tests
 from mutmut.__main__ import cli
 cli.main(args=sys.argv[1:], standalone_mode=False)
 """
@@ -176,11 +195,50 @@ def mutmut_run(names: list[str], cap: int | None = MAX_TESTS_PER_MUTANT) -> None
     if names:
         for copy in COPIES:
             shutil.rmtree(MUTANTS / copy, ignore_errors=True)
-        code = ORDERED_RUN.replace("OWN_TESTS", repr(OWN_TESTS)).replace(
-            "MAX_TESTS_PER_MUTANT", str(cap or 1_000_000)
+        code = (
+            ORDERED_RUN.replace("OWN_TESTS", repr(OWN_TESTS))
+            .replace("MAX_TESTS_PER_MUTANT", str(cap or 1_000_000))
+            .replace("KILLERS", repr(str(KILLERS)))
         )
         command = [sys.executable, "-c", code, "run", *names]
-        subprocess.run(command, cwd=ROOT, check=False)
+        # mutmut runs its type_check_command as `python -m tests.mutate typecheck mypy`:
+        # this interpreter's directory first on PATH makes `python` the one with mypy.
+        path = f"{Path(sys.executable).parent}{os.pathsep}{os.environ.get('PATH', '')}"
+        env = {**os.environ, "PATH": path, **MUTATE_ENV}
+        subprocess.run(command, cwd=ROOT, check=False, env=env)
+
+
+# A mutant function as mutmut writes it into mutants/: `def x_name__mutmut_12(` at the top
+# level or `def xǁClassǁname__mutmut_12(` in its class.
+MUTANT_DEF = re.compile(r"^(?:    )?def (\S+__mutmut_\d+)\(")
+ANY_DEF = re.compile(r"^(?:    )?(?:def|class) |^\S")
+
+
+def typecheck() -> int:
+    """mypy --strict over the mutated packages, as JSON lines, errors inside mutants only.
+
+    A mutant that fails the type check is caught: CI runs mypy --strict on the package,
+    so it could never land. mutmut needs every error to fall inside a mutant; the copy it
+    keeps of each original function (``__mutmut_orig``) is not one, and a few of those
+    fail only because of their new name (mypy allows ``return NotImplemented`` in a
+    method named ``__eq__`` alone), so errors outside mutants are left out here.
+    """
+    command = [sys.executable, "-m", "mypy", "--strict", "--no-warn-unused-ignores"]
+    done = subprocess.run(
+        [*command, "--output", "json", *PACKAGES], capture_output=True, text=True, check=False
+    )
+    lines: dict[str, list[str]] = {}
+    for line in done.stdout.splitlines():
+        if not line.strip():
+            continue
+        error = json.loads(line)
+        source = lines.setdefault(error["file"], Path(error["file"]).read_text("utf-8").split("\n"))
+        index = error["line"] - 1
+        while index >= 0 and not ANY_DEF.match(source[index]):
+            index -= 1
+        if index >= 0 and MUTANT_DEF.match(source[index]):
+            print(line)
+    return 0
 
 
 def generate() -> None:
@@ -192,11 +250,14 @@ def generate() -> None:
 
 
 def run(modules: list[str], *, which: str) -> None:
+    """One mutmut run over the ``which`` mutants of ``modules`` (one clean-test pass)."""
     generate()
+    names = []
     for module in modules:
-        names = [n for n, code in results(module).items() if status(code) == which]
-        print(f"{module}: {len(names)} {which} mutants", flush=True)
-        mutmut_run(names, cap=MAX_TESTS_PER_MUTANT if which == "unchecked" else None)
+        found = [n for n, code in results(module).items() if status(code) == which]
+        print(f"{module}: {len(found)} {which} mutants", flush=True)
+        names += found
+    mutmut_run(names, cap=MAX_TESTS_PER_MUTANT if which == "unchecked" else None)
 
 
 def score(counts: Counter[str]) -> float | None:
@@ -229,47 +290,94 @@ def report() -> int:
     return 1 if unexplained else 0
 
 
+def killers() -> dict[str, str]:
+    """Mutant name -> the test that failed first under it, from the runs so far."""
+    out = {}
+    if KILLERS.exists():
+        for line in KILLERS.read_text(encoding="utf-8").splitlines():
+            name, _, test = line.partition(" ")
+            if test:
+                out[name] = test
+    return out
+
+
 def baseline() -> int:
-    """Record every mutant now killed, with the hash of its function (see ``sample``)."""
+    """Record every mutant a test killed: its function's hash and the test (see ``sample``)."""
     hashes = function_hashes()
+    tests = killers()
     killed = sorted(
         name
         for module in all_modules()
         for name, code in results(module).items()
-        if status(code) in ("killed", "timeout") and name in hashes
+        if status(code) == "killed" and name in hashes and name in tests
     )
-    KILLED.write_text("".join(f"{name} {hashes[name]}\n" for name in killed), encoding="utf-8")
+    lines = "".join(f"{name} {hashes[name]} {tests[name]}\n" for name in killed)
+    KILLED.write_text(HEADER + lines, encoding="utf-8")
     print(f"{len(killed)} killed mutants recorded in {KILLED.relative_to(ROOT)}")
     return 0
 
 
+HEADER = """\
+# Mutants a test killed in the last `make mutate` (`python -m tests.mutate baseline`):
+# NAME, the hash of its function as mutmut saw it, and the test that failed first.
+"""
+
+
+def generate_only() -> None:
+    """Write mutants/ afresh without running a test (mutmut's own first step)."""
+    for copy in COPIES:
+        shutil.rmtree(MUTANTS / copy, ignore_errors=True)
+    code = (
+        "from mutmut.__main__ import copy_src_dir, copy_also_copy_files, setup_source_paths,"
+        " create_mutants\n"
+        "copy_src_dir(); copy_also_copy_files(); setup_source_paths(); create_mutants(2)\n"
+    )
+    subprocess.run([sys.executable, "-c", code], cwd=ROOT, check=True)
+
+
+def run_one(name: str, test: str) -> str:
+    """``killed``, ``survived``, or ``gone`` (the test no longer exists) for one mutant."""
+    command = [sys.executable, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider", test]
+    env = {**os.environ, **MUTATE_ENV, "MUTANT_UNDER_TEST": name}
+    done = subprocess.run(command, cwd=MUTANTS, env=env, capture_output=True, check=False)
+    return {0: "survived", 1: "killed"}.get(done.returncode, "gone")
+
+
 def sample(size: int, seed: int) -> int:
-    """Run ``size`` mutants the last full run killed; one that survives now fails."""
-    recorded = {}  # a line without a hash (an older baseline) is never drawn
+    """Run ``size`` recorded kills against their tests; a mutant that now survives fails.
+
+    Each recorded kill names the test that failed under it, so a draw costs one test
+    run and no mutmut stats pass. Only mutants of functions unchanged since the
+    baseline are drawn: mutmut numbers the mutants of a changed function anew, so the
+    same name may be another change. A test since renamed or removed is skipped.
+    """
+    recorded = {}
     for line in KILLED.read_text(encoding="utf-8").splitlines():
-        name, _, function_hash = line.strip().partition(" ")
-        if name:
-            recorded[name] = function_hash or None
-    if not any(recorded.values()):
-        print(f"{KILLED.name} records no function hashes: run `make mutate`, then `baseline`")
+        name, function_hash, test = [*line.split(" ", 2), "", ""][:3]
+        if name and not name.startswith("#") and test:
+            recorded[name] = (function_hash, test)
+    if not recorded:
+        print(f"{KILLED.name} records no kills with their test: run `make mutate`, then baseline")
         return 1  # nothing could be drawn: a green run here would check nothing
-    generate()
+    generate_only()
     current = function_hashes()
-    # Only mutants of functions unchanged since the baseline: the same name in a changed
-    # function is another mutation, which the baseline says nothing about.
-    drawable = sorted(n for n, h in recorded.items() if current.get(n) == h)
+    drawable = sorted(n for n, (h, _) in recorded.items() if current.get(n) == h)
     stale = len(recorded) - len(drawable)
     if stale:
         print(f"{stale} of {len(recorded)} recorded kills are of changed or removed functions")
     if not drawable:
         print("nothing to draw: run `make mutate` then `python -m tests.mutate baseline`")
         return 0
-    chosen = random.Random(seed).sample(drawable, min(size, len(drawable)))
-    mutmut_run(chosen)
-    codes = {n: c for module in all_modules() for n, c in results(module).items()}
-    counts = Counter(status(codes[n]) for n in chosen)
-    weak = [n for n in chosen if status(codes[n]) not in ("killed", "timeout")]
-    print(f"sample of {len(chosen)} (seed {seed}): {dict(counts)}")
+    order = random.Random(seed).sample(drawable, len(drawable))
+    verdicts: dict[str, str] = {}
+    for name in order:
+        if sum(v != "gone" for v in verdicts.values()) == size:
+            break
+        verdicts[name] = run_one(name, recorded[name][1])
+        print(f"{verdicts[name]:9} {name}  ({recorded[name][1]})", flush=True)
+    counts = Counter(verdicts.values())
+    print(f"sample of {size} (seed {seed}): {dict(counts)}")
+    weak = [n for n, v in verdicts.items() if v == "survived"]
     for name in weak:
         print(f"no longer killed: {name}  (see: {sys.executable} -m mutmut show {name})")
     return 1 if weak else 0
@@ -288,6 +396,8 @@ def main(argv: list[str]) -> int:
         return report()
     if command == "baseline":
         return baseline()
+    if command == "typecheck":
+        return typecheck()
     if command == "sample":
         size = int(rest[0]) if rest else 25
         seed = int(rest[1]) if len(rest) > 1 else random.SystemRandom().randrange(1 << 30)
