@@ -5,6 +5,7 @@
     python -m tests.mutate report               # score per module, survivors not accepted
     python -m tests.mutate baseline             # record the killed mutants for `sample`
     python -m tests.mutate sample [N [SEED]]    # N recorded kills run afresh; fail on a survivor
+    python -m tests.mutate try NAME TEST ...    # do these tests kill this mutant?
     python -m tests.mutate typecheck mypy       # (mutmut's type_check_command, in mutants/)
 
 mutmut (configured in pyproject.toml, [tool.mutmut]) copies the package into
@@ -335,12 +336,24 @@ def generate_only() -> None:
     subprocess.run([sys.executable, "-c", code], cwd=ROOT, check=True)
 
 
-def run_one(name: str, test: str) -> str:
-    """``killed``, ``survived``, or ``gone`` (the test no longer exists) for one mutant."""
-    command = [sys.executable, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider", test]
+def run_one(name: str, *tests: str, quiet: bool = True) -> str:
+    """``killed``, ``survived``, or ``gone`` (no such test any more) for one mutant."""
+    command = [sys.executable, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider", *tests]
     env = {**os.environ, **MUTATE_ENV, "MUTANT_UNDER_TEST": name}
-    done = subprocess.run(command, cwd=MUTANTS, env=env, capture_output=True, check=False)
+    done = subprocess.run(command, cwd=MUTANTS, env=env, capture_output=quiet, check=False)
     return {0: "survived", 1: "killed"}.get(done.returncode, "gone")
+
+
+def try_tests(name: str, tests: list[str]) -> int:
+    """Run ``tests`` (as in this tree now) against one mutant: does a new test kill it?"""
+    if not (MUTANTS / "genparams").exists():
+        generate_only()
+    else:  # the mutants stay; the tests are copied afresh
+        shutil.rmtree(MUTANTS / "tests", ignore_errors=True)
+        shutil.copytree(ROOT / "tests", MUTANTS / "tests")
+    verdict = run_one(name, *tests, quiet=False)
+    print(f"{name}: {verdict}")
+    return 0 if verdict == "killed" else 1
 
 
 def sample(size: int, seed: int) -> int:
@@ -398,6 +411,8 @@ def main(argv: list[str]) -> int:
         return baseline()
     if command == "typecheck":
         return typecheck()
+    if command == "try" and len(rest) >= 2:
+        return try_tests(rest[0], rest[1:])
     if command == "sample":
         size = int(rest[0]) if rest else 25
         seed = int(rest[1]) if len(rest) > 1 else random.SystemRandom().randrange(1 << 30)

@@ -9,6 +9,7 @@ decide. Nothing here re-implements them.
 from __future__ import annotations
 
 import array
+import os
 from pathlib import Path
 from typing import Any
 
@@ -17,6 +18,13 @@ from rclpy.context import Context
 from rclpy.node import Node
 
 from genparams.runtime import ParameterDeclarationError
+
+
+# These nodes only read their arguments and talk to no one: a DDS domain of their own
+# keeps them from discovering the other nodes of the test run. Creating and destroying
+# a participant while others in its domain are discovered could hang Fast DDS in
+# destroy_node (seen when the whole runtime suite ran first in one process).
+QUIET_DOMAIN = (int(os.environ.get("ROS_DOMAIN_ID", "0")) + 116) % 232
 
 
 class RclRefusedError(Exception):
@@ -34,7 +42,7 @@ def overrides(node: str, args: list[str]) -> dict[str, Any]:
     """The overrides node ``/ns/name`` receives from ``--ros-args *args``; raises Refused."""
     context = Context()
     try:
-        rclpy.init(args=["--ros-args", *args], context=context)
+        rclpy.init(args=["--ros-args", *args], context=context, domain_id=QUIET_DOMAIN)
     except Exception as exc:  # rcl's parse errors come as RCLError / invalid-args errors
         raise RclRefusedError(str(exc)) from exc
     namespace, _, name = node.rpartition("/")
@@ -66,7 +74,7 @@ def started(node: str, args: list[str], classes: list[tuple[type, str]]) -> dict
     ignored, as on a robot.
     """
     context = Context()
-    rclpy.init(args=["--ros-args", *args], context=context)
+    rclpy.init(args=["--ros-args", *args], context=context, domain_id=QUIET_DOMAIN)
     namespace, _, name = node.rpartition("/")
     ros_node = Node(name, namespace=namespace or "/", context=context)
     try:
