@@ -3,6 +3,7 @@
     python -m tests.mutate run [MODULE ...]     # test the unchecked mutants of these modules
     python -m tests.mutate recheck [MODULE ...] # run the survivors again (after new tests)
     python -m tests.mutate report               # score per module, survivors not accepted
+    python -m tests.mutate survivors [MODULE ...]  # the survivors still to kill or explain
     python -m tests.mutate baseline             # record the killed mutants for `sample`
     python -m tests.mutate sample [N [SEED]]    # N recorded kills run afresh; fail on a survivor
     python -m tests.mutate try NAME TEST ...    # do these tests kill this mutant?
@@ -302,6 +303,16 @@ def killers() -> dict[str, str]:
     return out
 
 
+def survivors(modules: list[str]) -> int:
+    """Print the survivors (and mutants no test reaches) of ``modules`` not yet accepted."""
+    allowed = accepted()
+    for module in modules:
+        for name, code in results(module).items():
+            if status(code) in ("survived", "suspicious", "no tests") and name not in allowed:
+                print(f"{status(code):9} {name}")
+    return 0
+
+
 def baseline() -> int:
     """Record every mutant a test killed: its function's hash and the test (see ``sample``)."""
     hashes = function_hashes()
@@ -411,6 +422,8 @@ def main(argv: list[str]) -> int:
         return baseline()
     if command == "typecheck":
         return typecheck()
+    if command == "survivors":
+        return survivors(rest or all_modules())
     if command == "try" and len(rest) >= 2:
         return try_tests(rest[0], rest[1:])
     if command == "sample":
