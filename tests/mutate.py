@@ -151,7 +151,9 @@ OWN_TESTS = {
 MAX_TESTS_PER_MUTANT = 150
 
 # Workers run the same tests at once, with the same node names: each gets a DDS domain
-# of its own (200-231), or a service call could be answered by the other worker's node.
+# of its own (200-231), or a service call could be answered by another worker's node.
+# They wait on ROS services and executors more than they compute: 6 keep 2 cores busy.
+WORKERS = int(os.environ.get("MUTATE_WORKERS", "6"))
 # mutmut hands pytest the tests in no particular order, so a mutant a 1 ms test kills
 # often waits for a slow node test first. The patch below orders and caps them; the
 # workers fork from this process, so it reaches them. It runs in a fresh interpreter
@@ -165,14 +167,26 @@ own_tests, cap, killers = OWN_TESTS, MAX_TESTS_PER_MUTANT, KILLERS
 plain = harness.PytestRunner._pytest_args_regular_run
 def ordered(self, tests):
     mutant = os.environ.get("MUTANT_UNDER_TEST", "")
-    if mutant:  # a worker: its nodes must not answer the other worker's service calls
-        os.environ["ROS_DOMAIN_ID"] = str(200 + os.getpid() % 32)
+    if mutant:  # a worker: its nodes must not answer another worker's service calls
+        take_a_domain()
     own = next((v for k, v in own_tests.items() if mutant.startswith(k + ".")), ())
     durations = state().duration_by_test
     def key(test):
         return (not test.startswith(own), durations.get(test, 0.0), test)
     tests = sorted(tests, key=key)
     return plain(self, tests[:cap] if mutant and tests else tests)
+def take_a_domain():  # the first free of 200-231, held until this worker exits
+    import fcntl, tempfile
+    for domain in range(200, 232):
+        lock = os.path.join(tempfile.gettempdir(), f"genparams-mutate-domain-{domain}.lock")
+        fd = os.open(lock, os.O_CREAT | os.O_RDWR)
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            os.close(fd)
+            continue
+        os.environ["ROS_DOMAIN_ID"] = str(domain)
+        return
 class Killer:  # records the test that failed first under a mutant, for `sample`
     def __init__(self, mutant):
         self.mutant = mutant
@@ -202,7 +216,7 @@ def mutmut_run(names: list[str], cap: int | None = MAX_TESTS_PER_MUTANT) -> None
             .replace("MAX_TESTS_PER_MUTANT", str(cap or 1_000_000))
             .replace("KILLERS", repr(str(KILLERS)))
         )
-        command = [sys.executable, "-c", code, "run", *names]
+        command = [sys.executable, "-c", code, "run", "--max-children", str(WORKERS), *names]
         # mutmut runs its type_check_command as `python -m tests.mutate typecheck mypy`:
         # this interpreter's directory first on PATH makes `python` the one with mypy.
         path = f"{Path(sys.executable).parent}{os.pathsep}{os.environ.get('PATH', '')}"
