@@ -376,6 +376,9 @@ def try_tests(name: str, tests: list[str]) -> int:
     else:  # the mutants stay; the tests are copied afresh
         shutil.rmtree(MUTANTS / "tests", ignore_errors=True)
         shutil.copytree(ROOT / "tests", MUTANTS / "tests")
+    if run_one("", *tests) != "survived":  # no mutant: the tests must pass in mutants/ too
+        print(f"{' '.join(tests)} fail(s) without a mutant in mutants/: no verdict")
+        return 2
     verdict = run_one(name, *tests, quiet=False)
     print(f"{name}: {verdict}")
     return 0 if verdict == "killed" else 1
