@@ -19,7 +19,6 @@ from rclpy.node import Node
 
 from genparams.runtime import ParameterDeclarationError
 
-
 # These nodes only read their arguments and talk to no one: a DDS domain of their own
 # keeps them from discovering the other nodes of the test run. Creating and destroying
 # a participant while others in its domain are discovered could hang Fast DDS in
