@@ -69,6 +69,7 @@ class HandServedTarget:
         self.values = dict(values)
         self.failures = 0
         self.reads = 0
+        self.change_after_read: dict[str, Any] = {}  # changed once the next read is answered
         self.node.create_service(GetParameters, f"{self.name}/get_parameters", self.get)
         self.node.create_service(ListParameters, f"{self.name}/list_parameters", self.list)
         self.events = self.node.create_publisher(
@@ -86,6 +87,9 @@ class HandServedTarget:
                 Parameter(name, value=self.values[name]).get_parameter_value()
                 for name in request.names
             ]
+            if self.change_after_read:
+                self.change(**self.change_after_read)
+                self.change_after_read = {}
         return response
 
     def list(
@@ -237,6 +241,20 @@ def test_changes_arriving_during_a_reread_are_reported_with_it_once(
         ("joints", ("shoulder", "elbow"), ("shoulder", "wrist")),
     ]
     assert [(c.name, c.old, c.new) for c in seen[1]] == [("max_speed", 1.0, 2.0)]
+    watch.cancel()
+
+
+def test_a_change_made_just_after_the_first_read_is_reported(
+    ros: RosHarness, arm: types.ModuleType
+) -> None:
+    target = HandServedTarget(ros, ARM_VALUES)
+    target.change_after_read = {"max_speed": 2.5}
+    seen: list[Changes[Any]] = []
+    watch = arm.ArmParams.remote(ros.node(), target.name).watch(seen.append)
+    assert ros.wait(watch.ready).max_speed == 1.0
+    spin_until(ros, lambda: len(seen) == 1)
+    assert [(c.name, c.old, c.new) for c in seen[0]] == [("max_speed", 1.0, 2.5)]
+    assert watch.latest.max_speed == 2.5
     watch.cancel()
 
 
