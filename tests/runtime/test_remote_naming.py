@@ -7,6 +7,7 @@ from pathlib import Path
 
 import pytest
 
+from genparams.runtime.remote import RemoteParams
 from tests.support import ROOT, RosHarness, load_generated
 
 
@@ -22,6 +23,7 @@ def arm(tmp_path: Path) -> types.ModuleType:
         ("/robot", "arm", "", "ArmParams.remote('/robot/arm')"),
         ("/robot", "arm", "left", "ArmParams.remote('/robot/arm', prefix='left')"),
         ("/robot", "/other/arm", "", "ArmParams.remote('/other/arm')"),
+        ("/lidarX", "arm", "", "ArmParams.remote('/lidarX/arm')"),
     ],
 )
 def test_the_target_is_resolved_in_the_client_namespace(
@@ -38,3 +40,11 @@ def test_waiting_for_a_node_that_is_not_there_ends_at_the_timeout(
 ) -> None:
     remote = arm.ArmParams.remote(ros.node(), "/nobody_serves_this")
     assert remote.wait_for_services(timeout_sec=0.2) is False
+
+
+def test_a_client_built_by_hand_has_no_prefix_unless_given(
+    ros: RosHarness, arm: types.ModuleType
+) -> None:
+    remote = RemoteParams(arm.ArmParams, ros.node(), "/arm")
+    assert repr(remote) == "ArmParams.remote('/arm')"
+    assert remote.full_name("max_speed") == "max_speed"
