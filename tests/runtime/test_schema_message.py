@@ -16,8 +16,9 @@ from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from std_msgs.msg import String
 
 from genparams import __version__
-from genparams.runtime.schema_topic import SCHEMA_TOPIC_SUFFIX
-from tests.support import RosHarness, load_generated
+from genparams.runtime.schema_topic import SCHEMA_TOPIC_SUFFIX, class_text
+from genparams.runtime.spec import compile_schema
+from tests.support import ROOT, RosHarness, load_generated
 
 GRIPPER = """\
 genparams: 1
@@ -255,3 +256,17 @@ def test_classes_declared_on_one_node_merge_in_one_latched_message(
     assert merged["classes"][1:] == classes
     assert merged["hash"] == digest({"classes": [c["hash"] for c in merged["classes"]]})
     assert newest == json.dumps(merged, sort_keys=True)
+
+
+def test_a_class_description_is_built_once_per_prefix(
+    gripper: types.ModuleType, tmp_path: Path
+) -> None:
+    arm = load_generated(ROOT / "examples" / "arm" / "arm.yaml", tmp_path)
+    hand = compile_schema(gripper.GripperParams._SPEC)
+    first = class_text(hand, "")
+    assert json.loads(first.text)["hash"] == first.hash
+    class_text(compile_schema(arm.ArmParams._SPEC), "")  # another class, the same prefix
+    assert class_text(hand, "") is first  # every node declaring it shares this text
+    prefixed = class_text(hand, "hand")
+    assert prefixed is not first and prefixed.hash != first.hash
+    assert class_text(hand, "hand") is prefixed
