@@ -141,7 +141,9 @@ OWN_TESTS = {
         "tests/schema/test_expressions.py",
         "tests/runtime/test_rules",
     ),
-    "genparams.runtime.remote": ("tests/runtime/test_remote.py",),
+    "genparams.runtime.remote": ("tests/runtime/test_remote",),
+    "genparams.runtime.remote_watch": ("tests/runtime/test_remote",),
+    "genparams.runtime.schema_topic": ("tests/runtime/test_schema_message.py",),
     "genparams.paramsfile": ("tests/paramsfile/",),
 }
 # A mutant that survives would otherwise run every test that calls its function (over
