@@ -103,4 +103,3 @@ def test_unpickling_a_value_of_another_shape_of_its_class_fails() -> None:
             pickle.loads(data)
     finally:
         module.Versioned = original  # type: ignore[attr-defined]
-
