@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import types
-from pathlib import Path
 
 import pytest
 from rclpy.parameter import Parameter
@@ -127,9 +126,7 @@ def test_a_key_may_repeat_a_name_of_another_namespace(
     assert list(cfg) == ["goal_time", "inner"] and cfg["inner"].scale == 1.0
 
 
-def test_entries_read_by_key_in_a_dict_beside_the_plain_names(
-    beside: types.ModuleType, tmp_path: Path
-) -> None:
+def test_entries_sit_in_the_dict_beside_the_plain_names(beside: types.ModuleType) -> None:
     snapshot = beside.BesideParams.defaults({"constraints": {"elbow": {"goal": 0.2}}})
     assert snapshot.to_dict()["constraints"] == {
         "goal_time": 0.5,
@@ -139,3 +136,11 @@ def test_entries_read_by_key_in_a_dict_beside_the_plain_names(
         "shoulder": {"goal": 0.1},
         "elbow": {"goal": 0.2},
     }
+
+
+def test_values_with_the_same_entries_are_equal(beside: types.ModuleType) -> None:
+    cls = beside.BesideParams
+    changed = cls.defaults({"weights.elbow.x-1.w": 2.0})
+    assert cls.defaults() == cls.defaults() and changed != cls.defaults()
+    assert changed.weights["shoulder"] == cls.defaults().weights["shoulder"]
+    assert changed.weights["elbow"] != cls.defaults().weights["elbow"]
