@@ -35,6 +35,12 @@ parameters:
       "*":
         for_each: interfaces
         w: {type: double, default: 1.0}
+  arm:
+    wrist:
+      tilt: {type: double, default: 0.0}
+      "*":                  # arm.wrist.<joint>.speed, beside tilt
+        for_each: joints
+        speed: {type: double, default: 1.0}
   defaults:
     strictness: {type: int, default: 1}
   snapshot: {type: bool, default: false}
@@ -51,6 +57,8 @@ SETS = [
     ("constraints.inner.depth", 3, lambda cfg: cfg.constraints.inner.depth),
     ("constraints.elbow.goal", 0.7, lambda cfg: cfg.constraints["elbow"].goal),
     ("weights.elbow.x-1.w", 4.0, lambda cfg: cfg.weights["elbow"]["x-1"].w),
+    ("arm.wrist.tilt", 0.5, lambda cfg: cfg.arm.wrist.tilt),
+    ("arm.wrist.shoulder.speed", 3.0, lambda cfg: cfg.arm.wrist["shoulder"].speed),
 ]
 
 
@@ -81,6 +89,11 @@ def test_a_set_reaches_the_live_view_and_the_change_record(
         (
             Parameter("joints", value=["shoulder", "goal_time"]),
             "joints: item 'goal_time' is already a name in constraints: an entry cannot "
+            "share it (for_each)",
+        ),
+        (
+            Parameter("joints", value=["elbow", "tilt"]),
+            "joints: item 'tilt' is already a name in arm.wrist: an entry cannot "
             "share it (for_each)",
         ),
         (
