@@ -70,4 +70,5 @@ def test_undeclare_names_the_class_that_declares_the_parameter(
         "base.limit: cannot be undeclared: SafetyParams declares it and its typed view would "
         "keep the value (parameter services refuse it the same way)"
     )
+    assert refused.value.name == "base.limit"  # type: ignore[attr-defined]
     assert node.get_parameter("base.limit").value == 5.0
