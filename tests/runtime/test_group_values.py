@@ -9,7 +9,7 @@ import types
 
 import pytest
 
-from genparams.runtime.tree import Group, _rebuild, build_tree, to_dict
+from genparams.runtime.tree import Group, GroupMap, _rebuild, build_tree, to_dict
 from tests.runtime.schemas import MOTION, generate
 
 
@@ -75,6 +75,27 @@ def test_to_dict_of_a_class_no_tree_was_built_of_guesses_the_ros_names() -> None
         "lambda": 0.5,
         "value_": "V",
     }
+
+
+class Keyed(Group):
+    """An in-place map, hand-written: entries by key in ``_map``, beside plain fields."""
+
+    __slots__ = ("_map", "rate", "snapshot_")
+
+
+def test_to_dict_of_in_place_entries_of_classes_no_tree_was_built_of() -> None:
+    entries = GroupMap({"left": _rebuild(Inner, ("d", "f", "v"))})
+    keyed = _rebuild(Keyed, (entries, 2.0, True))
+    assert to_dict(keyed) == {
+        "left": {"defaults_": "d", "from": "f", "value_": "v"},
+        "snapshot": True,
+        "rate": 2.0,
+    }
+
+
+def test_defaults_is_a_snapshot_of_itself(motion: types.ModuleType) -> None:
+    made = motion.MotionParams.defaults()
+    assert made.snapshot() is made and copy.copy(made) is made
 
 
 def test_group_whose_detached_slot_was_never_set_copies_as_a_frozen_value() -> None:
