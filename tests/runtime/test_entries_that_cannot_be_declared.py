@@ -46,7 +46,7 @@ def classes(tmp_path_factory: pytest.TempPathFactory) -> tuple[types.ModuleType,
 
 
 def test_keys_change_and_entries_keep_their_shape(
-    ros: RosHarness, classes: tuple[types.ModuleType, ...]
+    ros: RosHarness, classes: tuple[types.ModuleType, ...], capfd: pytest.CaptureFixture[str]
 ) -> None:
     outer_module, inner_module = classes
     node = ros.node()
@@ -58,24 +58,30 @@ def test_keys_change_and_entries_keep_their_shape(
 
     result = node.set_parameters_atomically(
         [
-            Parameter("joints", value=["wrist"]),
-            Parameter("gains.names", value=["base", "wrist"]),
+            Parameter("joints", value=["wrist", "hand"]),
+            Parameter("gains.names", value=["base", "wrist", "hand"]),
             Parameter("gains.limit", value=5),
         ]
     )
 
     assert result.successful, result.reason
-    assert list(outer.gains) == ["wrist"] and outer.gains["wrist"].p == 1.0
+    assert list(outer.gains) == ["wrist", "hand"] and outer.gains["wrist"].p == 1.0
     assert node.get_parameter("gains.wrist.p").value == 1.0  # outer's entry
     # inner holds what the node stored, and the entries it had.
-    assert inner.names == ("base", "wrist") and inner.limit == 5 and list(inner) == ["base"]
+    assert inner.names == ("base", "wrist", "hand") and inner.limit == 5 and list(inner) == ["base"]
     assert inner["base"].p == 2.0
     (changes,) = seen
     assert changes.before is before and changes.after is inner.snapshot()
     assert [(c.name, c.old, c.new) for c in changes] == [
-        ("names", ("base",), ("base", "wrist")),
+        ("names", ("base",), ("base", "wrist", "hand")),
         ("limit", 3, 5),
     ]
     assert changes.after.snapshot() is changes.after  # a frozen value, as every snapshot
-    assert (changes.after.names, changes.after.limit) == (("base", "wrist"), 5)
+    assert (changes.after.names, changes.after.limit) == (("base", "wrist", "hand"), 5)
     assert (before.names, before.limit) == (("base",), 3)
+    logged = capfd.readouterr().err
+    assert (
+        "mapped entries keep their previous keys: "
+        "gains.wrist.p: already declared on this node by other code; "
+        "gains.hand.p: already declared on this node by other code\n"
+    ) in logged
