@@ -10,6 +10,7 @@ from __future__ import annotations
 import types
 
 import pytest
+from rcl_interfaces.msg import SetParametersResult
 from rclpy.parameter import Parameter
 
 from genparams.runtime import Changes
@@ -85,3 +86,31 @@ def test_keys_change_and_entries_keep_their_shape(
         "gains.wrist.p: already declared on this node by other code; "
         "gains.hand.p: already declared on this node by other code\n"
     ) in logged
+
+
+def test_entries_refused_when_declared_keep_their_shape(
+    ros: RosHarness, classes: tuple[types.ModuleType, ...], capfd: pytest.CaptureFixture[str]
+) -> None:
+    """An on-set callback that lets each entry name through once: it accepts the new
+    entries when the change of keys is checked, and refuses their declaration after."""
+    outer_module, _ = classes
+    node = ros.node()
+    outer = outer_module.OuterParams.declare(node)
+    seen: set[str] = set()
+
+    def once(parameters: list[Parameter]) -> SetParametersResult:
+        names = {p.name for p in parameters if p.name.startswith("gains.")}
+        if names & seen:
+            return SetParametersResult(successful=False, reason="seen before")
+        seen.update(names)
+        return SetParametersResult(successful=True)
+
+    node.add_on_set_parameters_callback(once)
+    result = node.set_parameters([Parameter("joints", value=["wrist"])])[0]
+
+    assert result.successful, result.reason
+    assert outer.joints == ("wrist",) and list(outer.gains) == []
+    assert not node.has_parameter("gains.wrist.p")
+    assert "cannot change mapped entries: seen before\n" in capfd.readouterr().err
+    result = node.set_parameters([Parameter("joints", value=[])])[0]
+    assert result.successful and outer.joints == () and list(outer.gains) == []
