@@ -59,6 +59,8 @@ def test_verbose_names_each_nodes_schemas_and_prefixes(
         f"/robot/cam={schema},{schema}@front",
         "--map",
         "/robot/gps=",
+        "--map",
+        f"/*/lidar={schema}",  # a pattern no section reaches configures nothing here
         "--known",
         "rate",
         "-v",
@@ -173,3 +175,16 @@ def test_a_manifest_prefix_may_be_dotted(
         f"{bringup}: /robot/cam: checked against cam.yaml@sensors.front "
         "(manifest entry /robot/cam)",
     ]
+
+
+@pytest.mark.parametrize("text", ["- /robot/cam\n", ""], ids=["list", "empty"])
+def test_a_manifest_that_is_no_mapping_is_named(
+    text: str, tmp_path: Path, files: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    manifest = tmp_path / "manifest.yaml"
+    manifest.write_text(text, encoding="utf-8")
+    code, out, err = check(capsys, str(files.parent / "bringup.yaml"), "--manifest", str(manifest))
+    assert (code, out) == (2, [])
+    assert (
+        err == f"{manifest}:1:1: a manifest is a mapping with genparams_deployment: 1 and nodes:\n"
+    )
