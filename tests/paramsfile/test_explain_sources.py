@@ -8,7 +8,11 @@ from pathlib import Path
 
 import pytest
 
+from genparams.api import load_schema
 from genparams.cli import main
+from genparams.paramsfile.check_params import Bound
+from genparams.paramsfile.explain import explain as explain_node
+from genparams.paramsfile.params_reader import read_params_file
 
 ARM = """\
 genparams: 1
@@ -166,3 +170,19 @@ def test_without_a_schema_every_key_is_listed_unchecked(
         "speed_limit                        2.0                base.yaml:3:5 (/arm)",
         "use_sim_time                       true               base.yaml:7:5 (/arm)",
     ]
+
+
+def test_each_row_carries_the_schemas_type() -> None:
+    bound = Bound(load_schema("arm.yaml", ARM), "")
+    explanation = explain_node([bound], [read_params_file(BASE, "base.yaml")], "/arm")
+    assert {row.name: row.type_name for row in explanation.rows} == {
+        "colour": "",
+        "gains.shoulder.p": "double",
+        "gains.wrist.p": "double",
+        "joints": "string_array",
+        "max_speed": "double",
+        "mode": "string",
+        "plugin.rate": "",
+        "qos_overrides./tf.publisher.depth": "",
+        "use_sim_time": "",
+    }

@@ -119,7 +119,8 @@ nodes:
   /robot/cam:
     schemas: [../cam.yaml, {schema: ../cam.yaml, prefix: front}]
     known: [extra.*]
-  /robot/gps:
+  /robot/gps: {schemas: [{schema: ../cam.yaml}]}
+  /robot/imu:
 """
 
 
@@ -133,7 +134,7 @@ def test_a_good_manifest_takes_effect(folder: Path, capsys: pytest.CaptureFixtur
     assert out == [
         f"{bringup}: /robot/cam: checked against cam.yaml, cam.yaml@front "
         "(manifest entry /robot/cam)",
-        f"{bringup}: /robot/gps: checked against no schema (manifest entry /robot/gps)",
+        f"{bringup}: /robot/gps: checked against cam.yaml (manifest entry /robot/gps)",
     ]
     # Without the known names, what other code owns is what ROS would ignore.
     manifest.write_text(GOOD.replace("known: [rate]", "known: []").replace("extra.*", ""), "utf-8")
