@@ -172,17 +172,30 @@ def test_without_a_schema_every_key_is_listed_unchecked(
     ]
 
 
-def test_each_row_carries_the_schemas_type() -> None:
-    bound = Bound(load_schema("arm.yaml", ARM), "")
-    explanation = explain_node([bound], [read_params_file(BASE, "base.yaml")], "/arm")
-    assert {row.name: row.type_name for row in explanation.rows} == {
-        "colour": "",
-        "gains.shoulder.p": "double",
-        "gains.wrist.p": "double",
-        "joints": "string_array",
-        "max_speed": "double",
-        "mode": "string",
-        "plugin.rate": "",
-        "qos_overrides./tf.publisher.depth": "",
-        "use_sim_time": "",
-    }
+WITH_SCHEMA = {
+    "colour": ("", "nobody"),
+    "gains.shoulder.p": ("double", "schema"),
+    "gains.wrist.p": ("double", "schema"),
+    "joints": ("string_array", "schema"),
+    "max_speed": ("double", "schema"),
+    "mode": ("string", "schema"),
+    "plugin.rate": ("", "known"),
+    "qos_overrides./tf.publisher.depth": ("", "rclpy"),
+    "use_sim_time": ("", "rclpy"),
+}
+NAMES = ["colour", "gains.wrist.p", "joints", "plugin.rate", "qos_overrides./tf.publisher.depth"]
+WITHOUT_SCHEMA = {name: ("", "unchecked") for name in [*NAMES, "speed_limit", "use_sim_time"]}
+
+
+@pytest.mark.parametrize(
+    ("schemas", "expected"),
+    [(["arm.yaml"], WITH_SCHEMA), ([], WITHOUT_SCHEMA)],
+    ids=["schema", "no_schema"],
+)
+def test_each_row_names_its_type_and_owner(
+    schemas: list[str], expected: dict[str, tuple[str, str]]
+) -> None:
+    bounds = [Bound(load_schema(s, ARM), "") for s in schemas]
+    documents = [read_params_file(BASE, "base.yaml")]
+    explanation = explain_node(bounds, documents, "/arm", ["plugin.*"])
+    assert {r.name: (r.type_name, r.owner) for r in explanation.rows} == expected
