@@ -199,3 +199,21 @@ def test_each_row_names_its_type_and_owner(
     documents = [read_params_file(BASE, "base.yaml")]
     explanation = explain_node(bounds, documents, "/arm", ["plugin.*"])
     assert {r.name: (r.type_name, r.owner) for r in explanation.rows} == expected
+
+
+def test_a_prefixed_class_expands_its_mapped_entries_from_the_file(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path
+) -> None:
+    (tmp_path / "left.yaml").write_text(
+        "/arm:\n  ros__parameters:\n    left.joints: [wrist]\n    left.gains.wrist.p: 2.0\n",
+        encoding="utf-8",
+    )
+    code = main(["explain", "/arm", "--params-file", "left.yaml", "--schema", "arm.yaml@left"])
+    assert code == 1
+    assert capsys.readouterr().out.splitlines()[1:6] == [
+        "parameter           value      source                shadowed",
+        "left.gains.wrist.p  2.0        left.yaml:4:5 (/arm)  1.0 from default",
+        "left.joints         [wrist]    left.yaml:3:5 (/arm)  [shoulder] from default",
+        "left.max_speed      1.0        default",
+        "left.mode           (not set)  required, not set",
+    ]
