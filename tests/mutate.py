@@ -267,15 +267,15 @@ def generate() -> None:
         subprocess.run([*MUTMUT, "run", "genparams.runtime.changes*"], cwd=ROOT, check=False)
 
 
-def run(modules: list[str], *, which: str) -> None:
+def run(modules: list[str], *, which: tuple[str, ...]) -> None:
     """One mutmut run over the ``which`` mutants of ``modules`` (one clean-test pass)."""
     generate()
     names = []
     for module in modules:
-        found = [n for n, code in results(module).items() if status(code) == which]
-        print(f"{module}: {len(found)} {which} mutants", flush=True)
+        found = [n for n, code in results(module).items() if status(code) in which]
+        print(f"{module}: {len(found)} {' or '.join(which)} mutants", flush=True)
         names += found
-    mutmut_run(names, cap=MAX_TESTS_PER_MUTANT if which == "unchecked" else None)
+    mutmut_run(names, cap=MAX_TESTS_PER_MUTANT if which == ("unchecked",) else None)
 
 
 def score(counts: Counter[str]) -> float | None:
@@ -444,11 +444,12 @@ def sample(size: int, seed: int) -> int:
 def main(argv: list[str]) -> int:
     command, *rest = argv or ["report"]
     if command == "run":
-        run(rest or all_modules(), which="unchecked")
+        run(rest or all_modules(), which=("unchecked",))
         report()
         return 0
     if command == "recheck":
-        run(rest or all_modules(), which="survived")
+        # again with no cap on tests, and with the tests added since
+        run(rest or all_modules(), which=("survived", "suspicious", "no tests"))
         return report()
     if command == "report":
         return report()
