@@ -79,9 +79,7 @@ def test_a_prefixed_class_reports_its_required_and_deprecated_names() -> None:
 
 
 def test_a_skipped_section_gives_the_first_nodes_reason() -> None:
-    report = check_params(
-        CAMERA, read_params_file(PARAMS, "params.yaml"), ["/camera", "/ns/light"]
-    )
+    report = check_params(CAMERA, read_params_file(PARAMS, "params.yaml"), ["/camera", "/ns/light"])
     assert [str(p) for p in report.skipped] == [
         "params.yaml:7:1: /other: skipped: for another node (not /camera)"
     ]
