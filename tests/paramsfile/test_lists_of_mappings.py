@@ -74,3 +74,29 @@ def test_entries_keep_their_places(case: str, places: list[tuple[str, str, str]]
         for s in document.sections
         for e in s.entries
     ] == places
+
+
+MISNAMED = {
+    "in_a_group": (
+        HEAD + "    g:\n      v: [{k: [1]}, {m: [2]}]\n      w: 3\n",
+        "p.yaml:4:10: g.v: rcl reads this list of mappings as 'g.v.k.m' and then misnames the "
+        "keys after it: write g.v.<key>: value, not a list",
+        {"g.v.k.m": [2], "g.v.w": 3},
+    ),
+    "two_groups_deep": (
+        HEAD + "    g:\n      h:\n        v: [{k: {m: [1]}}, {n: [2]}]\n        w: 3\n",
+        "p.yaml:5:12: g.h.v: rcl reads this list of mappings as 'g.h.v.k.m.n' and then "
+        "misnames the keys after it: write g.h.v.<key>: value, not a list",
+        {"g.h.v.k.m.n": [2], "g.h.v.k.w": 3},
+    ),
+}
+
+
+@pytest.mark.parametrize(("text", "problem", "given"), MISNAMED.values(), ids=MISNAMED.keys())
+def test_a_list_that_shifts_the_names_after_it_is_reported(
+    text: str, problem: str, given: dict[str, object], tmp_path: Path
+) -> None:
+    assert [str(p) for p in read_params_file(text, "p.yaml").problems] == [problem]
+    params = tmp_path / "p.yaml"
+    params.write_text(text, encoding="utf-8")
+    assert overrides("/a", ["--params-file", str(params)]) == given
