@@ -270,12 +270,14 @@ def generate() -> None:
 def run(modules: list[str], *, which: tuple[str, ...]) -> None:
     """One mutmut run over the ``which`` mutants of ``modules`` (one clean-test pass)."""
     generate()
+    explained = accepted()
     names = []
     for module in modules:
-        found = [n for n, code in results(module).items() if status(code) in which]
+        codes = results(module).items()
+        found = [n for n, code in codes if status(code) in which and n not in explained]
         print(f"{module}: {len(found)} {' or '.join(which)} mutants", flush=True)
         names += found
-    mutmut_run(names, cap=MAX_TESTS_PER_MUTANT if which == ("unchecked",) else None)
+    mutmut_run(names)
 
 
 def score(counts: Counter[str]) -> float | None:
@@ -448,7 +450,7 @@ def main(argv: list[str]) -> int:
         report()
         return 0
     if command == "recheck":
-        # again with no cap on tests, and with the tests added since
+        # again, with the tests added since
         run(rest or all_modules(), which=("survived", "suspicious", "no tests"))
         return report()
     if command == "report":
