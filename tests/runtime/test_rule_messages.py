@@ -1,0 +1,113 @@
+"""A refused rule check says exactly why and where: kinds in words, arrays named by their
+items, the column counted from the check as written (leading blanks and line breaks
+included), and literal lists of each kind the language has."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+
+from genparams.runtime.expressions import RuleError
+from genparams.runtime.rules import compile_rule
+
+TYPES = {
+    "width": "int",
+    "ratio": "double",
+    "enabled": "bool",
+    "mode": "string",
+    "topics": "string_array",
+    "weights": "double_array",
+    "flags": "bool_array",
+    "camera.fps": "double",
+}
+VALUES: dict[str, Any] = {
+    "width": 640,
+    "ratio": 1.5,
+    "enabled": True,
+    "mode": "fast",
+    "topics": ("/a", "/b"),
+    "weights": (0.25, 0.75),
+    "flags": (True, False),
+    "camera.fps": 30.0,
+}
+
+
+@pytest.mark.parametrize(
+    ("check", "message"),
+    [
+        (
+            "mode in weights",
+            "'in' needs an item and an array of its kind (or two strings), "
+            "not a string and an array of number (at character 1)",
+        ),
+        (
+            "flags == topics",
+            "== compares values of one kind, not an array of bool and an array of string "
+            "(at character 1)",
+        ),
+        ("topics", "a check must be true or false (a comparison, say), not an array of string"),
+        (
+            "(weights if enabled else topics) == topics",
+            "both branches of 'if' must be of one kind, not an array of number and an array "
+            "of string (at character 2)",
+        ),
+        (
+            "() == ()",
+            "a literal list needs at least one item, all numbers, strings or bools "
+            "(at character 1)",
+        ),
+        (
+            "camera.fps.real > 0",
+            "'camera.fps.real' is not a parameter: attribute access is not allowed "
+            "('camera.fps' is a parameter) (at character 1)",
+        ),
+        (
+            "width.real > 0",
+            "'width.real' is not a parameter: attribute access is not allowed "
+            "('width' is a parameter) (at character 1)",
+        ),
+    ],
+)
+def test_refused_checks_give_the_whole_reason(check: str, message: str) -> None:
+    with pytest.raises(RuleError) as caught:
+        compile_rule("r", check, "", TYPES)
+    assert str(caught.value) == message
+
+
+@pytest.mark.parametrize(
+    ("check", "offset"),
+    [
+        ("widht > 0", 0),
+        ("   widht > 0", 3),
+        ("\n  widht > 0", 3),
+        ("width > 0 and\n  widht > 0", 16),
+        ("  width > 0 and\n widht > 0", 17),
+    ],
+)
+def test_the_column_counts_leading_blanks_and_line_breaks(check: str, offset: int) -> None:
+    with pytest.raises(RuleError) as caught:
+        compile_rule("r", check, "", TYPES)
+    assert caught.value.offset == offset
+    assert check.replace("\n", " ")[offset:].startswith("widht")
+    assert str(caught.value) == (
+        f"unknown parameter 'widht' (did you mean 'width'?) (at character {offset + 1})"
+    )
+
+
+@pytest.mark.parametrize(
+    ("check", "expected"),
+    [
+        ("width in (640, 480)", True),
+        ("ratio in [0.5, 1]", False),
+        ("enabled in (true, false)", True),
+        ("flags == (true, false)", True),
+        ("flags == [false, false]", False),
+        ("weights == (0.25, 0.75)", True),
+        ("mode in ('fast', 'slow')", True),
+        ("topics == ['/a']", False),
+    ],
+)
+def test_literal_lists_of_each_kind_are_accepted(check: str, expected: bool) -> None:
+    rule = compile_rule("r", check, "", TYPES)
+    assert rule.expression.evaluate(VALUES) is expected
