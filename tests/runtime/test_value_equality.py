@@ -14,6 +14,7 @@ from genparams.runtime.errors import RemoteSetError
 from genparams.runtime.values import same_value
 
 NAN = math.nan
+OTHER_NAN = float("nan")  # another object: a tuple compares its items by identity first
 
 
 @pytest.mark.parametrize(
@@ -26,14 +27,15 @@ NAN = math.nan
         (1.0, NAN, False),
         (NAN, "nan", False),
         ("nan", NAN, False),
-        ((1.0, NAN), (1.0, NAN), True),
+        ((1.0, NAN), (1.0, OTHER_NAN), True),
+        ((NAN, 1.0), (OTHER_NAN, 2.0), False),
         ((NAN,), (NAN, NAN), False),
         ((NAN, NAN), (NAN,), False),
         ((NAN, 1.0), (NAN, 2.0), False),
         ((NAN,), [NAN], False),
         ([NAN], (NAN,), False),
         ((), (), True),
-        (("a", NAN), ("a", NAN), True),
+        (("a", NAN), ("a", OTHER_NAN), True),
         (b"\x01", b"\x01", True),
         (b"\x01", b"\x02", False),
     ],
