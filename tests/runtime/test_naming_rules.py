@@ -132,6 +132,8 @@ def test_generated_names(schema: str, pascal: str, cls: str, module: str) -> Non
         (".front.", "fps", "front.fps"),
         ("a.b", "c.d", "a.b.c.d"),
         (".", "fps", "fps"),
+        ("Xarm.", "fps", "Xarm.fps"),
+        ("armX", "fps", "armX.fps"),
     ],
 )
 def test_join_prefix(prefix: str, name: str, joined: str) -> None:
@@ -149,6 +151,8 @@ def test_join_prefix(prefix: str, name: str, joined: str) -> None:
         ("front", "rear.fps", None),
         ("front", "front", None),
         ("a.b", "a.b.c", "c"),
+        ("Xarm", "Xarm.fps", "fps"),
+        ("armX.", "armX.fps", "fps"),
     ],
 )
 def test_strip_prefix(prefix: str, full_name: str, relative: str | None) -> None:
@@ -197,6 +201,11 @@ def test_absolute() -> None:
         (
             "/ns/cam-1",
             "node name 'cam-1' may hold only letters, digits and '_'",
+            "node name 'cam-1' may hold only letters, digits and '_'",
+        ),
+        (
+            "/**/*/cam-1",
+            "namespace '**' may hold only letters, digits and '_'",
             "node name 'cam-1' may hold only letters, digits and '_'",
         ),
         (
