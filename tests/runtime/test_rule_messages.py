@@ -4,12 +4,15 @@ included), and literal lists of each kind the language has."""
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Any
 
 import pytest
 
+import genparams
 from genparams.runtime.expressions import RuleError
 from genparams.runtime.rules import compile_rule
+from genparams.schema.errors import SchemaError
 
 TYPES = {
     "width": "int",
@@ -83,13 +86,15 @@ def test_refused_checks_give_the_whole_reason(check: str, message: str) -> None:
         ("\n  widht > 0", 3),
         ("width > 0 and\n  widht > 0", 16),
         ("  width > 0 and\n widht > 0", 17),
+        ("width > 0 and\r\n widht > 0", 16),
+        ("\r\nwidht > 0", 2),
     ],
 )
 def test_the_column_counts_leading_blanks_and_line_breaks(check: str, offset: int) -> None:
     with pytest.raises(RuleError) as caught:
         compile_rule("r", check, "", TYPES)
     assert caught.value.offset == offset
-    assert check.replace("\n", " ")[offset:].startswith("widht")
+    assert check.replace("\r", " ").replace("\n", " ")[offset:].startswith("widht")
     assert str(caught.value) == (
         f"unknown parameter 'widht' (did you mean 'width'?) (at character {offset + 1})"
     )
@@ -111,3 +116,26 @@ def test_the_column_counts_leading_blanks_and_line_breaks(check: str, offset: in
 def test_literal_lists_of_each_kind_are_accepted(check: str, expected: bool) -> None:
     rule = compile_rule("r", check, "", TYPES)
     assert rule.expression.evaluate(VALUES) is expected
+
+
+def test_a_check_of_the_maximum_length_is_accepted() -> None:
+    check = "width > 0"
+    check += " " * (2000 - len(check))
+    assert compile_rule("r", check, "", TYPES).expression.evaluate(VALUES) is True
+    with pytest.raises(RuleError, match=r"^a check is limited to 2000 characters$"):
+        compile_rule("r", check + " ", "", TYPES)
+
+
+def test_a_bad_check_is_reported_beside_a_parameter_left_out(tmp_path: Path) -> None:
+    schema = tmp_path / "demo.yaml"
+    schema.write_text(
+        "genparams: 1\nname: demo\nparameters:\n"
+        '  "": {type: int, default: 1}\n'
+        "  speed: {type: int, default: 1}\n"
+        'rules:\n  - {name: r, check: "speed <"}\n'
+    )
+    with pytest.raises(SchemaError) as caught:
+        genparams.generate(schema)
+    assert str(caught.value).splitlines()[1:] == [
+        f"{schema}:7:22: rules[0].check: invalid expression: invalid syntax"
+    ]
