@@ -10,7 +10,7 @@ from typing import Any
 import pytest
 
 import genparams
-from genparams.runtime.expressions import RuleError
+from genparams.runtime.expressions import RuleError, compile_expression
 from genparams.runtime.rules import compile_rule
 from genparams.schema.errors import SchemaError
 
@@ -55,6 +55,8 @@ VALUES: dict[str, Any] = {
             "both branches of 'if' must be of one kind, not an array of number and an array "
             "of string (at character 2)",
         ),
+        ("", "a check cannot be empty"),
+        (" \n\r ", "a check cannot be empty"),
         (
             "() == ()",
             "a literal list needs at least one item, all numbers, strings or bools "
@@ -139,3 +141,24 @@ def test_a_bad_check_is_reported_beside_a_parameter_left_out(tmp_path: Path) -> 
     assert str(caught.value).splitlines()[1:] == [
         f"{schema}:7:22: rules[0].check: invalid expression: invalid syntax"
     ]
+
+
+@pytest.mark.parametrize(
+    ("check", "message"),
+    [
+        ("width <", "invalid expression: invalid syntax"),
+        ("width < (1", "invalid expression: '(' was never closed (at character 9)"),
+        ("  width < (1", "invalid expression: '(' was never closed (at character 11)"),
+        ("-" * 1990 + "width > 0", "invalid expression: too deeply nested"),
+    ],
+)
+def test_invalid_expressions_say_where_they_can(check: str, message: str) -> None:
+    with pytest.raises(RuleError) as caught:
+        compile_rule("r", check, "", TYPES)
+    assert str(caught.value) == message
+
+
+def test_an_expression_keeps_the_check_as_written() -> None:
+    text = " width >\n  0"
+    expression = compile_expression(text, TYPES)
+    assert (expression.text, expression.kind, expression.parameters) == (text, "bool", ("width",))
