@@ -23,6 +23,7 @@ TYPES = {
     "weights": "double_array",
     "flags": "bool_array",
     "camera.fps": "double",
+    "blob": "byte_array",
 }
 VALUES: dict[str, Any] = {
     "width": 640,
@@ -33,6 +34,7 @@ VALUES: dict[str, Any] = {
     "weights": (0.25, 0.75),
     "flags": (True, False),
     "camera.fps": 30.0,
+    "blob": b"ab",
 }
 
 
@@ -113,6 +115,25 @@ def test_the_column_counts_leading_blanks_and_line_breaks(check: str, offset: in
         ("weights == (0.25, 0.75)", True),
         ("mode in ('fast', 'slow')", True),
         ("topics == ['/a']", False),
+        ("mode in mode and 'as' in mode", True),
+        ("'fast' not in mode", False),
+        ("(width if enabled else ratio) > 1", True),
+        ("(width if not enabled else ratio) > 100", False),
+        ("len(blob) == 2 and len(mode) == 4 and len(flags) == 2", True),
+        ("width not in weights", True),
+        ("weights != (0.25, 0.75)", False),
+        ("-width < 0 and +width > 0 and -(-ratio) == ratio", True),
+        ("min(weights) == 0.25 and max(weights) == 0.75", True),
+        ("min(width, ratio, 3) == ratio and max(1, width) == 640", True),
+        ("abs(-ratio) == ratio and abs(width - 641) == 1", True),
+        ("enabled and width > 600 and ratio > 1", True),
+        ("enabled and width > 600 and ratio > 2", False),
+        ("not enabled or ratio > 2", False),
+        ("not enabled or ratio > 2 or mode == 'fast'", True),
+        ("1 < width < 1000 > ratio", True),
+        ("1 < width < 100 > ratio", False),
+        ("width // 100 == 6 and width % 100 == 40 and width / 64 == 10", True),
+        ("width * 2 - 80 == 1200 and width + 0.5 == 640.5", True),
     ],
 )
 def test_literal_lists_of_each_kind_are_accepted(check: str, expected: bool) -> None:
@@ -162,3 +183,96 @@ def test_an_expression_keeps_the_check_as_written() -> None:
     text = " width >\n  0"
     expression = compile_expression(text, TYPES)
     assert (expression.text, expression.kind, expression.parameters) == (text, "bool", ("width",))
+
+
+@pytest.mark.parametrize(
+    ("check", "message"),
+    [
+        ("1j == width", "rules cannot use the constant 1j (at character 1)"),
+        (
+            "'a'.x > 0",
+            "attribute access is not allowed: only dotted parameter names such as a.b (at "
+            "character 1)",
+        ),
+        ("+mode > 0", "unary minus or plus needs a number, not a string (at character 2)"),
+        ("-enabled < 0", "unary minus or plus needs a number, not true/false (at character 2)"),
+        ("~width > 0", "rules cannot use the operator ~ (at character 1)"),
+        ("not mode", "'not' needs true/false, not a string (at character 5)"),
+        ("mode and enabled", "'and' needs true/false, not a string (at character 1)"),
+        ("enabled or width", "'or' needs true/false, not a number (at character 12)"),
+        ("len() > 0", "len() takes one string or array, not nothing (at character 1)"),
+        (
+            "len(width, mode) > 0",
+            "len() takes one string or array, not a number, a string (at character 1)",
+        ),
+        (
+            "min() > 0",
+            "min() takes two or more numbers, or one array of numbers, not nothing (at "
+            "character 1)",
+        ),
+        (
+            "max(width, mode) > 0",
+            "max() takes two or more numbers, or one array of numbers, not a number, a "
+            "string (at character 1)",
+        ),
+        (
+            "abs(width, width) > 0",
+            "abs() takes one number, not a number, a number (at character 1)",
+        ),
+        ("max(*topics) > 0", "max() takes plain positional arguments (at character 1)"),
+        (
+            "width.foo() > 0",
+            "rules cannot call methods: the functions are abs, len, max, min (at character 1)",
+        ),
+        (
+            "print(width)",
+            "rules cannot call 'print': the functions are abs, len, max, min (at character 1)",
+        ),
+        (
+            "width < mode",
+            "< compares two numbers or two strings, not a number and a string (at character 1)",
+        ),
+        (
+            "enabled < enabled",
+            "< compares two numbers or two strings, not true/false and true/false (at character 1)",
+        ),
+        (
+            "topics < topics",
+            "< compares two numbers or two strings, not an array of string and an array of "
+            "string (at character 1)",
+        ),
+        (
+            "width in mode",
+            "'in' needs an item and an array of its kind (or two strings), not a number and "
+            "a string (at character 1)",
+        ),
+        ("width @ width > 0", "rules cannot use the operator @ (at character 1)"),
+        ("width | 1 > 0", "rules cannot use the operator | (at character 1)"),
+        ("width is not 1", "rules cannot use 'is not' (use !=) (at character 1)"),
+        ("lambda: 1", "rules cannot use lambda (at character 1)"),
+        ('f"{width}" == mode', "rules cannot use f-strings (at character 1)"),
+        ("{1} == {1}", "rules cannot use set literals (at character 1)"),
+        ("(x for x in topics) == 1", "rules cannot use comprehensions (at character 1)"),
+        ("width[0:1] == 1", "rules cannot use indexing (at character 1)"),
+        (
+            "ratio if width else ratio",
+            "the condition of 'if' needs true/false, not a number (at character 10)",
+        ),
+        ('1 == "1"', "== compares values of one kind, not a number and a string (at character 1)"),
+        (
+            "(true, 1) == (true, 1)",
+            "a literal list needs at least one item, all numbers, strings or bools (at "
+            "character 1)",
+        ),
+        ("fps > 0", "unknown parameter 'fps' (at character 1)"),
+        (
+            "camera.fsp > 0",
+            "unknown parameter 'camera.fsp' (did you mean 'camera.fps'?) (at character 1)",
+        ),
+        ("min > 0", "'min' is a function: call it, as in min(...) (at character 1)"),
+    ],
+)
+def test_each_construct_is_refused_with_its_reason(check: str, message: str) -> None:
+    with pytest.raises(RuleError) as caught:
+        compile_rule("r", check, "", TYPES)
+    assert str(caught.value) == message
