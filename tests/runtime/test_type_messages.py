@@ -3,6 +3,7 @@ cut to 57 and an ellipsis beyond: in schema defaults and in values from ROS alik
 
 from __future__ import annotations
 
+from array import array
 from dataclasses import dataclass
 from typing import Any
 
@@ -90,6 +91,8 @@ def _item(index: int, what: str) -> Refused:
         ("string_array", ["a", "\x00"], Refused(f"item 1: {NUL.message}"), Refused("item 1: ")),
         ("double_array", [1, 2.5], (1.0, 2.5), Refused("item 0: expected double, got integer")),
         ("bool_array", (True,), (True,), (True,)),
+        ("int_array", array("q", [1, -2]), (1, -2), (1, -2)),  # as rclpy hands them over
+        ("double_array", array("d", [0.5]), (0.5,), (0.5,)),
         ("string_array", [], (), ()),
         ("int_array", None, Refused("expected int_array, got NoneType None"), ()),
         ("byte_array", [b"\x01", 255, bytearray(b"\x00")], b"\x01\xff\x00", b"\x01\xff\x00"),
