@@ -276,3 +276,19 @@ def test_each_construct_is_refused_with_its_reason(check: str, message: str) -> 
     with pytest.raises(RuleError) as caught:
         compile_rule("r", check, "", TYPES)
     assert str(caught.value) == message
+
+
+def test_a_rule_reading_a_parameter_left_out_is_not_reported_again(tmp_path: Path) -> None:
+    schema = tmp_path / "demo.yaml"
+    schema.write_text(
+        "genparams: 1\nname: demo\nparameters:\n"
+        "  speed: {type: int, default: fast}\n"
+        "  limit: {type: int, default: 3}\n"
+        'rules:\n  - {name: r, check: "speed < limit"}\n'
+    )
+    with pytest.raises(SchemaError) as caught:
+        genparams.generate(schema)
+    assert str(caught.value).splitlines() == [
+        f"{schema}:4:31: parameters.speed.default: default does not match type: "
+        "expected integer, got string 'fast'"
+    ]
