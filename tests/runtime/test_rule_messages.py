@@ -149,7 +149,7 @@ def test_a_check_of_the_maximum_length_is_accepted() -> None:
         compile_rule("r", check + " ", "", TYPES)
 
 
-def test_a_bad_check_is_reported_beside_a_parameter_left_out(tmp_path: Path) -> None:
+def test_a_bad_check_is_reported_beside_a_bad_name(tmp_path: Path) -> None:
     schema = tmp_path / "demo.yaml"
     schema.write_text(
         "genparams: 1\nname: demo\nparameters:\n"
