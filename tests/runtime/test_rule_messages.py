@@ -115,6 +115,7 @@ def test_the_column_counts_leading_blanks_and_line_breaks(check: str, offset: in
         ("weights == (0.25, 0.75)", True),
         ("mode in ('fast', 'slow')", True),
         ("topics == ['/a']", False),
+        ("640 in (width, 1) and (ratio, 2.0) == (1.5, 2)", True),
         ("mode in mode and 'as' in mode", True),
         ("'fast' not in mode", False),
         ("(width if enabled else ratio) > 1", True),
