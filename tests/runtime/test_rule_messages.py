@@ -130,6 +130,7 @@ def test_the_column_counts_leading_blanks_and_line_breaks(check: str, offset: in
         ("enabled and width > 600 and ratio > 1", True),
         ("enabled and width > 600 and ratio > 2", False),
         ("not enabled or ratio > 2", False),
+        ("not (width < 0)", True),
         ("not enabled or ratio > 2 or mode == 'fast'", True),
         ("1 < width < 1000 > ratio", True),
         ("1 < width < 100 > ratio", False),
