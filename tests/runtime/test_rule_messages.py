@@ -196,6 +196,7 @@ def test_an_expression_keeps_the_check_as_written() -> None:
             "attribute access is not allowed: only dotted parameter names such as a.b (at "
             "character 1)",
         ),
+        ("width + mode > 0", "the operator + needs a number, not a string (at character 9)"),
         ("+mode > 0", "unary minus or plus needs a number, not a string (at character 2)"),
         ("-enabled < 0", "unary minus or plus needs a number, not true/false (at character 2)"),
         ("~width > 0", "rules cannot use the operator ~ (at character 1)"),
