@@ -285,13 +285,14 @@ def test_a_rule_reading_a_parameter_left_out_is_not_reported_again(tmp_path: Pat
     schema = tmp_path / "demo.yaml"
     schema.write_text(
         "genparams: 1\nname: demo\nparameters:\n"
-        "  speed: {type: int, default: fast}\n"
+        "  speed: {type: integer, default: 1}\n"
         "  limit: {type: int, default: 3}\n"
         'rules:\n  - {name: r, check: "speed < limit"}\n'
     )
     with pytest.raises(SchemaError) as caught:
         genparams.generate(schema)
     assert str(caught.value).splitlines() == [
-        f"{schema}:4:31: parameters.speed.default: default does not match type: "
-        "expected integer, got string 'fast'"
+        f"{schema}:4:17: parameters.speed.type: 'integer' is not one of bool, int, double, "
+        "string, byte_array, bool_array, int_array, double_array, string_array "
+        "(did you mean 'int'?)"
     ]
