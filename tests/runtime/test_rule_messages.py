@@ -133,6 +133,8 @@ def test_the_column_counts_leading_blanks_and_line_breaks(check: str, offset: in
         ("not (width < 0)", True),
         ("not enabled or ratio > 2 or mode == 'fast'", True),
         ("1 < width < 1000 > ratio", True),
+        ("0 < width < 1000", True),
+        ("0 < width < 10", False),
         ("1 < width < 100 > ratio", False),
         ("width // 100 == 6 and width % 100 == 40 and width / 64 == 10", True),
         ("width * 2 - 80 == 1200 and width + 0.5 == 640.5", True),
