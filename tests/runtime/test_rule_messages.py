@@ -187,6 +187,8 @@ def test_an_expression_keeps_the_check_as_written() -> None:
     text = " width >\n  0"
     expression = compile_expression(text, TYPES)
     assert (expression.text, expression.kind, expression.parameters) == (text, "bool", ("width",))
+    rule = compile_rule("wide", text, "Wide enough.", TYPES)
+    assert (rule.name, rule.check, rule.description) == ("wide", text, "Wide enough.")
 
 
 @pytest.mark.parametrize(
