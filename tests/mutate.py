@@ -316,7 +316,11 @@ def report() -> int:
     _row("**all**", total["mutants"], total)
     for name in unexplained:
         print(f"survivor not explained in {ACCEPTED.name}: {name}")
-    return 1 if unexplained else 0
+    known = {name for module in all_modules() for name in results(module)}
+    stale = [name for name in allowed if known and name not in known]
+    for name in stale:  # its function changed or went: the reason may no longer hold
+        print(f"{ACCEPTED.name} names a mutant that no longer exists: {name}")
+    return 1 if unexplained or stale else 0
 
 
 def _row(module: str, mutants: int, counts: Counter[str]) -> None:
