@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
+from fractions import Fraction
 
 # Node names and their wildcards are name rules: runtime.naming holds them.
 from genparams.runtime.naming import WILDCARD_ANY, WILDCARD_ONE
@@ -111,8 +112,9 @@ def _strtod(text: str) -> float | None:
         negative = word.group(1) == "-"
         value = math.nan if word.group(2).lower().startswith("nan") else math.inf
         return -value if negative else value
-    if _STRTOD_HEX.fullmatch(text):
-        cleaned = text.strip()
+    hexadecimal = _STRTOD_HEX.fullmatch(text) is not None
+    cleaned = text.strip()
+    if hexadecimal:
         sign = -1.0 if cleaned.startswith("-") else 1.0
         body = cleaned.lstrip("+-")
         if "p" not in body.lower():
@@ -122,15 +124,30 @@ def _strtod(text: str) -> float | None:
         except OverflowError:
             return None
     elif _STRTOD_DECIMAL.fullmatch(text):
-        value = float(text.strip())
+        value = float(cleaned)
     else:
         return None
-    # strtod reports ERANGE on overflow and underflow; ROS then keeps the text as a string.
-    if math.isinf(value) or (value != 0.0 and abs(value) < _SMALLEST_NORMAL):
+    # strtod reports ERANGE on overflow, and on underflow (a result below the smallest
+    # normal double) unless the result is exact; ROS then keeps the text as a string.
+    if math.isinf(value):
         return None
-    if value == 0.0 and re.search(r"[1-9]", text.split("e")[0].split("E")[0]):
+    if value == 0.0:
+        mantissa = re.split("[pP]" if hexadecimal else "[eE]", cleaned)[0]
+        return None if re.search("[1-9a-fA-F]" if hexadecimal else "[1-9]", mantissa) else value
+    if abs(value) < _SMALLEST_NORMAL and Fraction(value) != _exact(cleaned, hexadecimal):
         return None
     return value
+
+
+def _exact(number: str, hexadecimal: bool) -> Fraction:
+    """The number a strtod spelling stands for, before rounding to a double."""
+    if not hexadecimal:
+        return Fraction(number)
+    sign = -1 if number.startswith("-") else 1
+    digits, _, exponent = number.lstrip("+-")[2:].lower().partition("p")
+    whole, _, fraction = digits.partition(".")
+    power = int(exponent or "0") - 4 * len(fraction)
+    return sign * int(whole + fraction, 16) * Fraction(2) ** power
 
 
 def ros_type_name(value: ScalarValue) -> str:
