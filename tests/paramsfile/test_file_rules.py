@@ -1,4 +1,4 @@
-"""Rules checked over a params file: the node's defaults, then the file's values, each problem once."""
+"""Rules checked over a params file: the defaults, then the file's values, each problem once."""
 
 from __future__ import annotations
 
