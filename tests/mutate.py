@@ -1,7 +1,8 @@
 """Mutation testing of the runtime and the params-file checker, module by module (mutmut).
 
     python -m tests.mutate run [MODULE ...]     # test the unchecked mutants of these modules
-    python -m tests.mutate recheck [MODULE ...] # run the survivors again (after new tests)
+    python -m tests.mutate recheck [MODULE ...] # survivors against the tests written for them
+    python -m tests.mutate quick MODULE ...     # unchecked mutants, the same way
     python -m tests.mutate report               # score per module, survivors not accepted
     python -m tests.mutate survivors [MODULE ...]  # the survivors still to kill or explain
     python -m tests.mutate baseline             # record the killed mutants for `sample`
@@ -146,6 +147,53 @@ OWN_TESTS = {
     "genparams.runtime.schema_topic": ("tests/runtime/test_schema_message.py",),
     "genparams.paramsfile": ("tests/paramsfile/",),
 }
+# The tests written to kill each module's mutants, as globs: `recheck` runs every survivor
+# against these (the longest prefix of its name that matches wins).
+KERNEL_TESTS = (
+    "tests/runtime/test_validators.py",
+    "tests/runtime/test_custom_arguments.py",
+    "tests/runtime/test_merged_values.py",
+    "tests/runtime/test_naming_rules.py",
+    "tests/runtime/test_rule_messages.py",
+    "tests/runtime/test_suggest_cutoffs.py",
+    "tests/runtime/test_type_messages.py",
+    "tests/runtime/test_value_equality.py",
+    "tests/schema/test_expressions.py",
+)
+KILLER_TESTS = {
+    # the node side of the runtime
+    "genparams.runtime": (
+        "tests/runtime/test_commit_semantics.py",
+        "tests/runtime/test_clashes_between_classes.py",
+        "tests/runtime/test_entries_that_cannot_be_declared.py",
+        "tests/runtime/test_group_values.py",
+        "tests/runtime/test_mapped_checks.py",
+        "tests/runtime/test_maps_beside_names.py",
+        "tests/runtime/test_renamed_pairs.py",
+        "tests/runtime/test_renames.py",
+    ),
+    # its kernel: validators, types, naming, expressions and rules
+    "genparams.runtime.validators": KERNEL_TESTS,
+    "genparams.runtime.validator_kinds": KERNEL_TESTS,
+    "genparams.runtime.types": KERNEL_TESTS,
+    "genparams.runtime.values": KERNEL_TESTS,
+    "genparams.runtime.naming": KERNEL_TESTS,
+    "genparams.runtime.suggest": KERNEL_TESTS,
+    "genparams.runtime.expression_words": KERNEL_TESTS,
+    "genparams.runtime.expressions": KERNEL_TESTS,
+    "genparams.runtime.rules": KERNEL_TESTS,
+    "genparams.runtime.rule_check": KERNEL_TESTS,
+    "genparams.runtime.errors": KERNEL_TESTS,
+    "genparams.runtime.changes": KERNEL_TESTS,
+    "genparams.runtime.remote": ("tests/runtime/test_remote*.py",),
+    "genparams.runtime.schema_topic": ("tests/runtime/test_schema_message.py",),
+    "genparams.paramsfile": (
+        "tests/paramsfile/test_[!c]*.py",
+        "tests/paramsfile/test_check_params*.py",
+    ),
+}
+
+
 # A mutant that survives would otherwise run every test that calls its function (over
 # 500 node tests for a range check: minutes on a loaded machine). It runs the module's
 # own tests and then the fastest others, this many in all; `recheck` runs the survivors
@@ -278,6 +326,76 @@ def run(modules: list[str], *, which: tuple[str, ...]) -> None:
         print(f"{module}: {len(found)} {' or '.join(which)} mutants", flush=True)
         names += found
     mutmut_run(names)
+
+
+def killer_tests(name: str) -> list[str]:
+    """The test files written for the module of mutant ``name`` (KILLER_TESTS)."""
+    prefix = max((k for k in KILLER_TESTS if name.startswith(k + ".")), key=len, default="")
+    found = {str(f.relative_to(ROOT)) for g in KILLER_TESTS.get(prefix, ()) for f in ROOT.glob(g)}
+    return sorted(found)
+
+
+def recheck(modules: list[str], which: tuple[str, ...] = ("survived", "suspicious", "no tests")) -> int:
+    """Run each survivor (and mutant no test reached) against the tests written for it.
+
+    A full mutmut pass over survivors runs up to MAX_TESTS_PER_MUTANT tests for each
+    mutant that truly survives: minutes apiece. Here each runs the test files of
+    KILLER_TESTS, four at a time, each in a DDS domain of its own; a mutant they kill
+    is recorded as killed in mutmut's results, with the test that failed first.
+    """
+    from concurrent.futures import ThreadPoolExecutor
+
+    explained = accepted()
+    todo = [
+        name
+        for module in modules
+        for name, code in results(module).items()
+        if status(code) in which and name not in explained
+    ]
+    shutil.rmtree(MUTANTS / "tests", ignore_errors=True)  # the mutants stay, tests afresh
+    shutil.copytree(ROOT / "tests", MUTANTS / "tests")
+    for tests in {tuple(killer_tests(name)) for name in todo}:  # they pass with no mutant
+        if run_one("", *tests) != "survived":
+            print(f"these tests fail without a mutant in mutants/: {' '.join(tests)}")
+            return 2
+    slots = list(range(232 - 4, 232))
+
+    def one(name: str) -> tuple[str, str, str]:
+        domain = slots.pop()
+        try:
+            command = [sys.executable, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider"]
+            env = {**os.environ, **MUTATE_ENV, "MUTANT_UNDER_TEST": name}
+            env["ROS_DOMAIN_ID"] = str(domain)
+            done = subprocess.run(
+                [*command, *killer_tests(name)],
+                cwd=MUTANTS,
+                env=env,
+                capture_output=True,
+                text=True,
+                check=False,
+            )
+        finally:
+            slots.append(domain)
+        failed = re.search(r"^FAILED (\S+)", done.stdout, re.MULTILINE)
+        verdict = "killed" if done.returncode == 1 and failed else "survived"
+        return name, verdict, failed.group(1) if failed else ""
+
+    with ThreadPoolExecutor(4) as pool:
+        for name, verdict, test in pool.map(one, todo):  # recorded as they come
+            print(f"{verdict:9} {name}", flush=True)
+            if verdict == "killed":
+                _record_kill(name)
+                with KILLERS.open("a", encoding="utf-8") as out:
+                    out.write(f"{name} {test}\n")
+    return report()
+
+
+def _record_kill(name: str) -> None:
+    module = next(m for m in all_modules() if name.startswith(m + "."))
+    meta_path = MUTANTS / (module.replace(".", "/") + ".py.meta")
+    meta = _meta(module)
+    meta.setdefault("exit_code_by_key", {})[name] = 1  # type: ignore[index]
+    meta_path.write_text(json.dumps(meta), encoding="utf-8")
 
 
 def score(counts: Counter[str]) -> float | None:
@@ -454,9 +572,9 @@ def main(argv: list[str]) -> int:
         report()
         return 0
     if command == "recheck":
-        # again, with the tests added since
-        run(rest or all_modules(), which=("survived", "suspicious", "no tests"))
-        return report()
+        return recheck(rest or all_modules())
+    if command == "quick" and rest:  # the unchecked mutants of these modules, as recheck runs them
+        return recheck(rest, which=("unchecked",))
     if command == "report":
         return report()
     if command == "baseline":
