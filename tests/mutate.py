@@ -335,7 +335,10 @@ def killer_tests(name: str) -> list[str]:
     return sorted(found)
 
 
-def recheck(modules: list[str], which: tuple[str, ...] = ("survived", "suspicious", "no tests")) -> int:
+UNCAUGHT = ("survived", "suspicious", "no tests")
+
+
+def recheck(modules: list[str], which: tuple[str, ...] = UNCAUGHT) -> int:
     """Run each survivor (and mutant no test reached) against the tests written for it.
 
     A full mutmut pass over survivors runs up to MAX_TESTS_PER_MUTANT tests for each
