@@ -336,6 +336,7 @@ def killer_tests(name: str) -> list[str]:
 
 
 UNCAUGHT = ("survived", "suspicious", "no tests")
+RECHECK_TIMEOUT_S = 300  # a set of KILLER_TESTS files takes seconds
 
 
 def recheck(modules: list[str], which: tuple[str, ...] = UNCAUGHT) -> int:
@@ -369,14 +370,18 @@ def recheck(modules: list[str], which: tuple[str, ...] = UNCAUGHT) -> int:
             command = [sys.executable, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider"]
             env = {**os.environ, **MUTATE_ENV, "MUTANT_UNDER_TEST": name}
             env["ROS_DOMAIN_ID"] = str(domain)
-            done = subprocess.run(
-                [*command, *killer_tests(name)],
-                cwd=MUTANTS,
-                env=env,
-                capture_output=True,
-                text=True,
-                check=False,
-            )
+            try:
+                done = subprocess.run(
+                    [*command, *killer_tests(name)],
+                    cwd=MUTANTS,
+                    env=env,
+                    capture_output=True,
+                    text=True,
+                    check=False,
+                    timeout=RECHECK_TIMEOUT_S,
+                )
+            except subprocess.TimeoutExpired:  # a mutant that hangs its tests is caught
+                return name, "timeout", ""
         finally:
             slots.append(domain)
         failed = re.search(r"^FAILED (\S+)", done.stdout, re.MULTILINE)
@@ -386,18 +391,20 @@ def recheck(modules: list[str], which: tuple[str, ...] = UNCAUGHT) -> int:
     with ThreadPoolExecutor(4) as pool:
         for name, verdict, test in pool.map(one, todo):  # recorded as they come
             print(f"{verdict:9} {name}", flush=True)
-            if verdict == "killed":
+            if verdict == "timeout":
+                _record_kill(name, code=-24)  # mutmut's own code for a timeout
+            elif verdict == "killed":
                 _record_kill(name)
                 with KILLERS.open("a", encoding="utf-8") as out:
                     out.write(f"{name} {test}\n")
     return report()
 
 
-def _record_kill(name: str) -> None:
+def _record_kill(name: str, code: int = 1) -> None:
     module = next(m for m in all_modules() if name.startswith(m + "."))
     meta_path = MUTANTS / (module.replace(".", "/") + ".py.meta")
     meta = _meta(module)
-    meta.setdefault("exit_code_by_key", {})[name] = 1  # type: ignore[index]
+    meta.setdefault("exit_code_by_key", {})[name] = code  # type: ignore[index]
     meta_path.write_text(json.dumps(meta), encoding="utf-8")
 
 
