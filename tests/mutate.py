@@ -186,6 +186,7 @@ KILLER_TESTS = {
     "genparams.runtime.errors": KERNEL_TESTS,
     "genparams.runtime.changes": KERNEL_TESTS,
     "genparams.runtime.remote": ("tests/runtime/test_remote*.py",),
+    "genparams.runtime.remote_watch": ("tests/runtime/test_remote*.py",),
     "genparams.runtime.schema_topic": ("tests/runtime/test_schema_message.py",),
     "genparams.paramsfile": (
         "tests/paramsfile/test_[!c]*.py",
