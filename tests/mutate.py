@@ -393,15 +393,17 @@ def recheck(modules: list[str], which: tuple[str, ...] = UNCAUGHT) -> int:
         for name, verdict, test in pool.map(one, todo):  # recorded as they come
             print(f"{verdict:9} {name}", flush=True)
             if verdict == "timeout":
-                _record_kill(name, code=-24)  # mutmut's own code for a timeout
-            elif verdict == "killed":
-                _record_kill(name)
+                _record(name, code=-24)  # mutmut's own code for a timeout
+            elif verdict == "survived":
+                _record(name, code=0)
+            else:
+                _record(name, code=1)
                 with KILLERS.open("a", encoding="utf-8") as out:
                     out.write(f"{name} {test}\n")
     return report()
 
 
-def _record_kill(name: str, code: int = 1) -> None:
+def _record(name: str, code: int) -> None:
     module = next(m for m in all_modules() if name.startswith(m + "."))
     meta_path = MUTANTS / (module.replace(".", "/") + ".py.meta")
     meta = _meta(module)

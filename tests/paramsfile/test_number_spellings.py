@@ -45,6 +45,12 @@ SPELLINGS: list[tuple[str, ScalarValue]] = [
     ("1e-99999", "1e-99999"),
     ("0x1p-1022", 2.2250738585072014e-308),
     ("0x1p1024", "0x1p1024"),  # overflow
+    # integers as strtol reads them with base 0: hex in either case, octal after a 0
+    ("0X1A", 26),
+    ("0x1a", 26),
+    ("017", 15),
+    ("-017", -15),
+    ("08", 8.0),  # not octal: strtol stops at 8, strtod reads the whole
 ]
 
 
