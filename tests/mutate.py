@@ -171,6 +171,8 @@ KILLER_TESTS = {
         "tests/runtime/test_maps_beside_names.py",
         "tests/runtime/test_renamed_pairs.py",
         "tests/runtime/test_renames.py",
+        "tests/runtime/test_rules_runtime.py",
+        "tests/runtime/test_parameter_prefixes.py",
     ),
     # its kernel: validators, types, naming, expressions and rules
     "genparams.runtime.validators": KERNEL_TESTS,
