@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import types
 from pathlib import Path
+from typing import Any
 
 import pytest
 from rclpy.node import Node
@@ -147,3 +148,22 @@ def test_a_node_with_old_names_and_arrays_sets_each_parameter_once(
     results = node.set_parameters([Parameter("names", value=[])])
     assert [r.successful for r in results] == [True]
     assert len(seen) == 2 and cfg.names == ()
+
+
+def test_a_set_made_by_a_subscriber_is_delivered_after_it_returns(
+    ros: RosHarness, rig: types.ModuleType
+) -> None:
+    node = ros.node()
+    cfg = rig.RigParams.declare(node)
+    order: list[str] = []
+
+    def react(changes: Any) -> None:
+        names = [change.name for change in changes.changed]
+        order.extend(names)
+        if names == ["gain"]:
+            assert node.set_parameters([Parameter("ticks", value=15)])[0].successful
+            order.append("set returned")
+
+    cfg.on_change(react)
+    assert node.set_parameters([Parameter("gain", value=2.0)])[0].successful
+    assert order == ["gain", "set returned", "ticks"]
