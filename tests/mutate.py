@@ -173,6 +173,7 @@ KILLER_TESTS = {
         "tests/runtime/test_renames.py",
         "tests/runtime/test_rules_runtime.py",
         "tests/runtime/test_parameter_prefixes.py",
+        "tests/runtime/test_declared_descriptors_and_notices.py",
     ),
     # its kernel: validators, types, naming, expressions and rules
     "genparams.runtime.validators": KERNEL_TESTS,
