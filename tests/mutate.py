@@ -36,6 +36,7 @@ import shutil
 import subprocess
 import sys
 from collections import Counter
+from collections.abc import Sequence
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -371,19 +372,9 @@ def recheck(modules: list[str], which: tuple[str, ...] = UNCAUGHT) -> int:
     def one(name: str) -> tuple[str, str, str]:
         domain = slots.pop()
         try:
-            command = [sys.executable, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider"]
-            env = {**os.environ, **MUTATE_ENV, "MUTANT_UNDER_TEST": name}
-            env["ROS_DOMAIN_ID"] = str(domain)
             try:
-                done = subprocess.run(
-                    [*command, *killer_tests(name)],
-                    cwd=MUTANTS,
-                    env=env,
-                    capture_output=True,
-                    text=True,
-                    check=False,
-                    timeout=RECHECK_TIMEOUT_S,
-                )
+                tests = killer_tests(name)
+                done = pytest_under(name, tests, domain=domain, timeout=RECHECK_TIMEOUT_S)
             except subprocess.TimeoutExpired:  # a mutant that hangs its tests is caught
                 return name, "timeout", ""
         finally:
@@ -518,11 +509,27 @@ def generate_only() -> None:
     subprocess.run([sys.executable, "-c", code], cwd=ROOT, check=True)
 
 
-def run_one(name: str, *tests: str, quiet: bool = True) -> str:
-    """``killed``, ``survived``, or ``gone`` (no such test any more) for one mutant."""
+def pytest_under(
+    name: str,
+    tests: Sequence[str],
+    *,
+    quiet: bool = True,
+    domain: int | None = None,
+    timeout: float | None = None,
+) -> subprocess.CompletedProcess[str]:
+    """``pytest -x TESTS`` in mutants/ with mutant ``name`` switched on ("" for none)."""
     command = [sys.executable, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider", *tests]
     env = {**os.environ, **MUTATE_ENV, "MUTANT_UNDER_TEST": name}
-    done = subprocess.run(command, cwd=MUTANTS, env=env, capture_output=quiet, check=False)
+    if domain is not None:
+        env["ROS_DOMAIN_ID"] = str(domain)
+    return subprocess.run(
+        command, cwd=MUTANTS, env=env, capture_output=quiet, text=True, check=False, timeout=timeout
+    )
+
+
+def run_one(name: str, *tests: str, quiet: bool = True) -> str:
+    """``killed``, ``survived``, or ``gone`` (no such test any more) for one mutant."""
+    done = pytest_under(name, tests, quiet=quiet)
     return {0: "survived", 1: "killed"}.get(done.returncode, "gone")
 
 
