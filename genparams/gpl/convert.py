@@ -13,7 +13,7 @@ from collections.abc import Collection
 from dataclasses import dataclass, field
 from typing import Any
 
-from genparams.gpl.validation import Translated, element_bounds, translate
+from genparams.gpl.validation import Translated, descriptor_range, element_bounds, translate
 from genparams.runtime.types import TYPES, ValueTypeError
 from genparams.runtime.validator_kinds import KINDS, ValidatorArgumentError, build_validator
 from genparams.schema.errors import SchemaProblem
@@ -71,6 +71,7 @@ def import_gpl(
     importer = _Importer(document, checks_module or f"{name}_checks", adopt)
     parameters = importer.namespace(tree, (top,), (), [tree])
     parameters = {**importer.added, **parameters}
+    importer.empty_key_lists(parameters, top)
     for name in sorted(importer.adopt):
         importer.warn((top,), f"--adopt {name}: the file declares no such parameter")
     result = Imported(
@@ -100,6 +101,7 @@ class _Importer:
         self.seen = 0
         self.kept = 0
         self.added: dict[str, dict[str, Any]] = {}  # key lists the GPL file lacks
+        self.key_lists: set[str] = set()  # dotted names of the parameters keying maps
 
     def warn(self, doc_path: Path, message: str) -> None:
         where = self.document.key_location(doc_path)
@@ -188,7 +190,19 @@ class _Importer:
             )
             return None
         inner = self.namespace(tree, doc_path, (*ros_path, "*"), [*scopes, tree])
+        self.key_lists.add(key_name)
         return {"for_each": key_name, **inner}
+
+    def empty_key_lists(self, parameters: dict[str, Any], top: str) -> None:
+        """GPL users write a key list's "no keys" as ``[""]``: genparams writes ``[]``."""
+        for name in sorted(self.key_lists):
+            leaf: Any = parameters
+            for part in name.split("."):
+                leaf = leaf.get(part) if isinstance(leaf, dict) else None
+            if isinstance(leaf, dict) and leaf.get("default") == [""]:
+                leaf["default"] = []
+                where = (top, *name.split("."), "default_value")
+                self.note(where, 'a key list of [""] means no keys: imported as []')
 
     def key_parameter(
         self, name: str, ros_path: tuple[str, ...], scopes: list[dict[str, Any]]
@@ -275,9 +289,6 @@ class _Importer:
                 self.warn(where, f"{translated.problem}: validator left out")
                 continue
             out.extend(translated.validators)
-            if translated.range is not None:
-                # GPL puts scalar bounds in the descriptor's range, where ROS enforces them.
-                out_leaf["range"] = {"min": translated.range[0], "max": translated.range[1]}
             if translated.element_low is not None:
                 low = translated.element_low
             if translated.element_high is not None:
@@ -288,8 +299,13 @@ class _Importer:
                 )
                 use.used_by.append((".".join(ros_path), list(raw or []) if raw != [] else []))
                 self.note(where, f"custom validator: write {self.checks_module}.{use.function}")
-        if low is not None or high is not None:
-            out.append(element_bounds(low, high, base))
+        limits = descriptor_range(validation, base)
+        if limits is not None and not base.endswith("_array"):
+            # GPL puts scalar bounds in the descriptor's range, where ROS enforces them.
+            out_leaf["range"] = {"min": limits[0], "max": limits[1]}
+        if limits is not None and (low is not None or high is not None):
+            # On an array, GPL's descriptor carries the same range; genparams checks each item.
+            out.append(element_bounds(*limits, base))
         return out
 
     def must_be_set(self, out: dict[str, Any], doc_path: Path) -> None:

@@ -31,6 +31,9 @@ KNOWN_BODIES = {
 }
 
 
+_RANGE_KEYS = {"min", "max", "step"}  # a range reads on one line: {min: 0.0, max: .inf}
+
+
 class _Dumper(yaml.SafeDumper):
     """Block mappings (one key a line, as people write schemas), flow lists."""
 
@@ -48,8 +51,9 @@ def _text(dumper: yaml.SafeDumper, value: str) -> yaml.Node:
 
 
 def _mapping(dumper: yaml.SafeDumper, value: dict[str, Any]) -> yaml.Node:
-    """A validator entry (``{length: {min: 1}}``) on one line; everything else one key a line."""
-    flow = len(value) == 1 and next(iter(value)) in KINDS
+    """A validator entry (``{length: {min: 1}}``) or a range on one line; everything else one
+    key a line."""
+    flow = (len(value) == 1 and next(iter(value)) in KINDS) or set(value) <= _RANGE_KEYS
     return dumper.represent_mapping("tag:yaml.org,2002:map", value, flow_style=flow)
 
 
@@ -82,7 +86,10 @@ def stub_text(imported: Imported, module: str) -> str:
         f"The schema references each as {module}:NAME.",
         "",
         "Each takes the parameter's value (then the schema's args) and returns None",
-        'when it is valid, or a reason (str) when it is not."""',
+        "when it is valid, or a reason (str) when it is not. An empty string also means",
+        "valid, as in generate_parameter_library's Python validators, so a body ported from",
+        "one (which took the rclpy Parameter: use `value` where it read `param.value`)",
+        'may keep returning ""."""',
         "",
         "from __future__ import annotations",
         "",
@@ -109,7 +116,8 @@ def _function(use: CustomUse) -> list[str]:
     return [
         f"def {use.function}(value: Any{params}) -> str | None:",
         *_docstring(f"GPL: {use.gpl_name}; used by {users}."),
-        "    # TODO: write the check GPL's C++ function made; this stub accepts every value.",
+        '    # TODO: port GPL\'s check (a C++ function, or a Python one returning "" when',
+        "    # valid, which this stub may keep doing); until then it accepts every value.",
         "    return None",
     ]
 

@@ -10,11 +10,10 @@ Python, referenced as a custom validator with its arguments.
 from __future__ import annotations
 
 import math
+import sys
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
-
-from genparams.runtime.types import INT64_MAX, INT64_MIN
 
 
 @dataclass(frozen=True)
@@ -78,7 +77,7 @@ def _bounds(name: str, args: list[Any], param_type: str) -> Translated:
     if len(args) != 2:
         raise ValueError(f"{name} takes [low, high], got {args!r}")
     if param_type.endswith("_array"):
-        return Translated(validators=({"element_bounds": list(args)},))
+        return Translated(element_low=args[0], element_high=args[1])
     return Translated(range=(args[0], args[1]))
 
 
@@ -152,12 +151,59 @@ def translate(key: str, raw: Any, param_type: str, checks_module: str) -> Transl
         return Translated(problem=str(exc))
 
 
-def element_bounds(low: float | None, high: float | None, param_type: str) -> dict[str, Any]:
-    """One ``element_bounds`` from GPL's separate lower / upper element bounds."""
-    if param_type.startswith("int"):
-        lower: float = INT64_MIN if low is None else low
-        upper: float = INT64_MAX if high is None else high
-    else:
-        lower = -math.inf if low is None else low
-        upper = math.inf if high is None else high
-    return {"element_bounds": [lower, upper]}
+# The open side of an integer range in GPL's generated Python module.
+GPL_INT_LOW = -(2**31) - 1
+GPL_INT_HIGH = 2**31 - 1
+
+
+def _is_number(value: Any) -> bool:
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
+
+
+def descriptor_range(validation: dict[Any, Any], param_type: str) -> tuple[float, float] | None:
+    """The descriptor range GPL's Python module declares, or None.
+
+    GPL reads it off the validations of an int or double parameter (arrays included), in
+    file order: any validation whose name holds ``bounds``, ``lt`` or ``gt`` and takes two
+    numbers sets both sides; one number sets the lower side for a name holding ``lower``
+    and for ``gt_eq``, one step above it for ``gt``, the upper side for a name holding
+    ``upper`` and for ``lt_eq``, one step below it for ``lt``. A step is 1 for integers,
+    the double epsilon for doubles. An open side is GPL's: +-inf, or +-(2**31 - 1)."""
+    integer = param_type in ("int", "int_array")
+    if not integer and param_type not in ("double", "double_array"):
+        return None
+    step: float = 1 if integer else sys.float_info.epsilon
+    low: float | None = None
+    high: float | None = None
+    for key, raw in validation.items():
+        name = str(key)
+        if not any(word in name for word in ("bounds", "lt", "gt")):
+            continue
+        base = name.replace("<>", "")
+        args = arguments(raw)
+        if not all(_is_number(arg) for arg in args):
+            continue
+        if len(args) == 2:
+            low, high = args
+        elif len(args) != 1:
+            continue
+        elif "lower" in name or base == "gt_eq":
+            low = args[0]
+        elif base == "gt":
+            low = args[0] + step
+        elif "upper" in name or base == "lt_eq":
+            high = args[0]
+        elif base == "lt":
+            high = args[0] - step
+    if low is None and high is None:
+        return None
+    if integer:
+        return (GPL_INT_LOW if low is None else low, GPL_INT_HIGH if high is None else high)
+    return (-math.inf if low is None else low, math.inf if high is None else high)
+
+
+def element_bounds(low: float, high: float, param_type: str) -> dict[str, Any]:
+    """One ``element_bounds`` from GPL's element bounds: NaN items pass, as in GPL."""
+    if param_type == "double_array":
+        return {"element_bounds": {"min": low, "max": high, "nan": True}}
+    return {"element_bounds": [low, high]}

@@ -27,7 +27,7 @@ def descriptor_for(param: CompiledParam, full_name: str) -> ParameterDescriptor:
         read_only=param.spec.read_only,
         dynamic_typing=False,
     )
-    ros_range = param.ros_range
+    ros_range = param.descriptor_range
     if ros_range is not None:
         if ros_range.integer:
             descriptor.integer_range = [

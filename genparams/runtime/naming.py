@@ -67,11 +67,12 @@ def entry_key_problem(keys: Sequence[str], maps: str) -> str | None:
     non-empty text of ``ENTRY_KEY_RULE``, and distinct.
     """
     seen: set[str] = set()
+    where = maps or "the top level"
     for index, key in enumerate(keys):
         if not is_entry_key(key):
-            return f"item {index} {key!r} cannot name an entry of {maps}: use {ENTRY_KEY_RULE}"
+            return f"item {index} {key!r} cannot name an entry of {where}: use {ENTRY_KEY_RULE}"
         if key in seen:
-            return f"item {index} {key!r} repeats: each item names one entry of {maps}"
+            return f"item {index} {key!r} repeats: each item names one entry of {where}"
         seen.add(key)
     return None
 

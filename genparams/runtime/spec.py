@@ -18,7 +18,7 @@ from genparams.runtime.naming import (
 from genparams.runtime.rules import CompiledRule, RuleError, compile_rule, rules_by_parameter
 from genparams.runtime.types import TYPES, ParamType
 from genparams.runtime.validator_kinds import build_validator
-from genparams.runtime.validators import OneOf, RosRange, SubsetOf, Validator
+from genparams.runtime.validators import Bounds, OneOf, RosRange, SubsetOf, Validator
 
 if TYPE_CHECKING:
     from genparams.runtime.tree import Group
@@ -121,6 +121,21 @@ class CompiledParam:
     def ros_range(self) -> RosRange | None:
         first = self.checks[0] if self.checks else None
         return first if isinstance(first, RosRange) and not first.each else None
+
+    @property
+    def descriptor_range(self) -> RosRange | None:
+        """The range the descriptor carries: a scalar's ``range``, or an array's item bounds
+        (its ``range`` or ``element_bounds``). ROS keeps a range on an array but applies it
+        to no item (genparams does), as generate_parameter_library's descriptors have it."""
+        if not self.type.name.endswith("_array"):
+            return self.ros_range
+        for check in self.checks:
+            if isinstance(check, RosRange) and check.each:
+                return check
+            if isinstance(check, Bounds) and check.each:
+                integer = self.type.name == "int_array"
+                return RosRange(check.low, check.high, 0, integer, each=True)
+        return None
 
     @property
     def constraints(self) -> tuple[str, ...]:

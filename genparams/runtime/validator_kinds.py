@@ -15,6 +15,7 @@ from typing import Any
 
 import regex as regex_engine
 
+from genparams.runtime.types import INT64_MAX, INT64_MIN
 from genparams.runtime.validators import (
     ALL_TYPES,
     ARRAYS,
@@ -64,6 +65,27 @@ def _pair(arg: Any, what: str) -> tuple[float, float]:
     if low > high:
         raise ValidatorArgumentError(f"{what} low {low!r} is greater than high {high!r}")
     return low, high
+
+
+def _element_bounds(arg: Any, param_type: str) -> Bounds:
+    """``[low, high]``, or ``{min, max, nan}``: an absent side is open, ``nan: true`` lets NaN
+    items pass (as generate_parameter_library's element bounds do)."""
+    if not isinstance(arg, dict):
+        return Bounds(*_pair(arg, "element_bounds"), each=True, rule="element_bounds")
+    if not arg or not set(arg) <= {"min", "max", "nan"} or not {"min", "max"} & set(arg):
+        raise ValidatorArgumentError(
+            f"element_bounds takes [low, high] or {{min, max, nan}}, got {fmt(arg)}"
+        )
+    nan = arg.get("nan", False)
+    if not isinstance(nan, bool):
+        raise ValidatorArgumentError(f"element_bounds nan must be true or false, got {fmt(nan)}")
+    if nan and param_type != "double_array":
+        raise ValidatorArgumentError("element_bounds nan applies to double_array only")
+    integer = param_type == "int_array"
+    low = arg.get("min", INT64_MIN if integer else -math.inf)
+    high = arg.get("max", INT64_MAX if integer else math.inf)
+    bounds = _pair([low, high], "element_bounds")
+    return Bounds(*bounds, each=True, rule="element_bounds", nan_passes=nan)
 
 
 def _choices(arg: Any, what: str) -> tuple[Any, ...]:
@@ -135,7 +157,7 @@ KINDS: dict[str, ValidatorKind] = {
         ValidatorKind(
             "element_bounds",
             NUMERIC_ARRAYS,
-            lambda a, _t: Bounds(*_pair(a, "element_bounds"), each=True, rule="element_bounds"),
+            _element_bounds,
         ),
         ValidatorKind(
             "one_of",

@@ -76,8 +76,11 @@ class Bounds:
     high: float
     each: bool = False
     rule: str = "bounds"
+    nan_passes: bool = False  # generate_parameter_library's element bounds let NaN items pass
 
     def _check_one(self, value: Any) -> bool:
+        if self.nan_passes and isinstance(value, float) and math.isnan(value):
+            return True
         return bool(self.low <= value <= self.high)
 
     def __call__(self, value: Any) -> str | None:
@@ -93,7 +96,8 @@ class Bounds:
 
     def describe(self) -> str:
         scope = "every item " if self.each else ""
-        return f"{scope}within [{self.low!r}, {self.high!r}]"
+        text = f"{scope}within [{self.low!r}, {self.high!r}]"
+        return f"{text} or NaN" if self.nan_passes else text
 
 
 @dataclass(frozen=True)
@@ -275,7 +279,8 @@ class Pattern:
 
 @dataclass(frozen=True)
 class Custom:
-    """A user function ``module:function`` taking the value then ``args``: None or a reason.
+    """A user function ``module:function`` taking the value then ``args``: None (or ``""``,
+    as generate_parameter_library's Python validators return) or a reason.
 
     ``args`` are fixed arguments from the schema, so one function serves several
     limits (``{custom: {function: 'pkg.checks:at_least_or_nan', args: [0.0]}}``).
@@ -305,8 +310,8 @@ class Custom:
             outcome = self.resolve()(value, *self.args)
         except Exception as exc:  # a failing check must reject, never crash the service
             return f"custom validator {self.call_text} raised {type(exc).__name__}: {exc}"
-        if outcome is None or outcome is True:
-            return None
+        if outcome is None or outcome is True or outcome == "":
+            return None  # "" is valid in generate_parameter_library's Python convention
         if outcome is False:
             return f"rejected by custom validator {self.call_text}"
         return f"{outcome} ({self.call_text})"

@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from rcl_interfaces.msg import ParameterType
 from rclpy.parameter import Parameter as RosParameter
 
 from genparams.api import load_schema
@@ -36,11 +37,15 @@ def _text(parameter: Parameter) -> str:
 
 
 def _descriptor_text(descriptor: Any) -> str:
-    """The constraints a descriptor states: its range fields, then additional_constraints."""
+    """The constraints a descriptor states: its range fields, then additional_constraints.
+
+    An array's range only mirrors its item bounds (ROS applies it to no item), which
+    additional_constraints states in full."""
     parts = []
+    array = descriptor.type >= ParameterType.PARAMETER_BYTE_ARRAY
     for ros_range, integer in (
-        (descriptor.integer_range, True),
-        (descriptor.floating_point_range, False),
+        ([] if array else descriptor.integer_range, True),
+        ([] if array else descriptor.floating_point_range, False),
     ):
         for r in ros_range:
             parts.append(RosRange(r.from_value, r.to_value, r.step, integer=integer).describe())

@@ -3,7 +3,10 @@
 The schema references each as diff_drive_controller_checks:NAME.
 
 Each takes the parameter's value (then the schema's args) and returns None
-when it is valid, or a reason (str) when it is not."""
+when it is valid, or a reason (str) when it is not. An empty string also means
+valid, as in generate_parameter_library's Python validators, so a body ported from
+one (which took the rclpy Parameter: use `value` where it read `param.value`)
+may keep returning ""."""
 
 from __future__ import annotations
 

@@ -1,0 +1,200 @@
+"""What GPL's Python module gives a node, for shapes its users write: the descriptor range
+of `gt<>`, `gt_eq<>`, `lt<>`, `lt_eq<>`, `bounds<>` and the element bounds, a key list of
+`[""]`, NaN items against element bounds, and custom validators in GPL's Python convention.
+
+The expected descriptors restate GPL's rule (its declare_parameter template): each
+validation whose name holds `bounds`, `lt` or `gt` sets a side of the range, in file order;
+`gt` is one step above its limit (1, or the double epsilon), `lt` one step below; an open
+side is +-inf for doubles and +-(2**31 - 1) for integers, arrays included.
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+import textwrap
+import types
+from pathlib import Path
+from typing import Any
+
+import pytest
+from rclpy.parameter import Parameter
+
+import genparams
+from genparams.gpl.convert import Imported, import_gpl
+from genparams.gpl.emit import schema_text, stub_text
+from genparams.schema.errors import SchemaError
+from genparams.schema.loader import load_yaml
+from tests.support import RosHarness, import_file, unique_name
+
+EPS = sys.float_info.epsilon
+INT_LOW, INT_HIGH = -(2**31) - 1, 2**31 - 1
+
+# (GPL type, default, validation as written in a GPL file, the range GPL's descriptor holds)
+SHAPES: dict[str, tuple[str, str, str, tuple[float, float] | None]] = {
+    "d_gt": ("double", "1.0", "gt<>: [0.5]", (0.5 + EPS, math.inf)),
+    "d_gt_eq": ("double", "1.0", "gt_eq<>: [0.0]", (0.0, math.inf)),
+    "d_lt": ("double", "1.0", "lt<>: [2.0]", (-math.inf, 2.0 - EPS)),
+    "d_lt_eq": ("double", "1.0", "lt_eq<>: [15.0]", (-math.inf, 15.0)),
+    "d_gt_lt_eq": ("double", "16.0", "{gt<>: [15.0], lt_eq<>: [20.0]}", (15.0 + EPS, 20.0)),
+    "d_bounds": ("double", "1.0", "bounds<>: [0.0, 5.0]", (0.0, 5.0)),
+    "d_gt_int_limit": ("double", "1.0", "gt<>: [0]", (EPS, math.inf)),
+    "i_gt": ("int", "5", "gt<>: [0]", (1, INT_HIGH)),
+    "i_gt_eq": ("int", "5", "gt_eq<>: [2]", (2, INT_HIGH)),
+    "i_lt": ("int", "5", "lt<>: [20]", (INT_LOW, 19)),
+    "i_lt_eq": ("int", "5", "lt_eq<>: [15]", (INT_LOW, 15)),
+    "i_gt_lt": ("int", "16", "{gt<>: [15], lt<>: [20]}", (16, 19)),
+    "i_bounds_then_lt_eq": ("int", "5", "{bounds<>: [0, 100], lt_eq<>: [10]}", (0, 10)),
+    "i_size_gt_only": ("int_array", "[1]", "size_gt<>: [0]", None),
+    "da_lower": ("double_array", "[1.0]", "lower_element_bounds<>: [0.0]", (0.0, math.inf)),
+    "da_upper": ("double_array", "[1.0]", "upper_element_bounds<>: [3.0]", (-math.inf, 3.0)),
+    "da_both": (
+        "double_array",
+        "[1.0]",
+        "{lower_element_bounds<>: [-1.0], upper_element_bounds<>: [1.0]}",
+        (-1.0, 1.0),
+    ),
+    "da_element_bounds": ("double_array", "[0.5]", "element_bounds<>: [0.1, 10.0]", (0.1, 10.0)),
+    "ia_lower": ("int_array", "[1]", "lower_element_bounds<>: [0]", (0, INT_HIGH)),
+    "ia_element_bounds": ("int_array", "[1]", "element_bounds<>: [0, 9]", (0, 9)),
+    "s_not_numeric": ("string", "a", "not_empty<>: []", None),
+}
+
+
+def _gpl_file(tmp_path: Path) -> Path:
+    lines = ["shapes:", "  joints:", "    type: string_array", '    default_value: [""]']
+    lines += ["    description: the joints, none by default as GPL users write it"]
+    lines += ["  gains:", "    __map_joints:", "      p:", "        type: double"]
+    lines += ["        default_value: 1.0", "        validation:", "          gt_eq<>: [0.0]"]
+    lines += ["  check:", "    type: double", "    default_value: 1.0", "    validation:"]
+    lines += ['      "shapes_checks::positive_or_empty": null']
+    for name, (gpl_type, default, validation, _) in SHAPES.items():
+        lines += [f"  {name}:", f"    type: {gpl_type}", f"    default_value: {default}"]
+        lines += [f"    validation: {validation if validation.startswith('{') else ''}"]
+        if not validation.startswith("{"):
+            lines += [f"      {validation}"]
+    path = tmp_path / "shapes.yaml"
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return path
+
+
+@pytest.fixture(scope="module")
+def imported(tmp_path_factory: pytest.TempPathFactory) -> tuple[Imported, types.ModuleType]:
+    folder = tmp_path_factory.mktemp("gpl_shapes")
+    source = _gpl_file(folder)
+    checks = unique_name("shapes_checks")
+    result = import_gpl(load_yaml(source.read_text("utf-8"), str(source)), checks)
+    assert [str(w) for w in result.warnings] == []
+    schema = folder / "shapes.yaml"
+    schema.write_text(schema_text(result, source.name), encoding="utf-8")
+    stub = stub_text(result, checks).replace(
+        "    return None",
+        '    return "" if value > 0 else "must be positive"',  # GPL's Python convention
+    )
+    (folder / f"{checks}.py").write_text(stub, encoding="utf-8")
+    sys.path.insert(0, str(folder))
+    module_name = unique_name("gen_shapes")
+    (folder / f"{module_name}.py").write_text(genparams.generate(schema), encoding="utf-8")
+    return result, import_file(folder / f"{module_name}.py", module_name)
+
+
+def _declared(ros: RosHarness, module: types.ModuleType) -> Any:
+    node = ros.node()
+    module.ShapesParams.declare(node)
+    return node
+
+
+@pytest.mark.parametrize("name", sorted(SHAPES))
+def test_descriptor_range_is_gpls(
+    ros: RosHarness, imported: tuple[Imported, types.ModuleType], name: str
+) -> None:
+    node = _declared(ros, imported[1])
+    descriptor = node.describe_parameter(name)
+    ranges = [*descriptor.integer_range, *descriptor.floating_point_range]
+    expected = SHAPES[name][3]
+    if expected is None:
+        assert ranges == []
+        return
+    (ros_range,) = ranges
+    assert (ros_range.from_value, ros_range.to_value, ros_range.step) == (*expected, 0)
+    kind = "int" if SHAPES[name][0].startswith("int") else "double"
+    assert bool(descriptor.integer_range) == (kind == "int")
+
+
+def test_strict_bounds_still_refuse_their_limit(
+    ros: RosHarness, imported: tuple[Imported, types.ModuleType]
+) -> None:
+    """ROS lets a value within 1e-6 of a range's edge pass; GPL's own check refuses it."""
+    node = _declared(ros, imported[1])
+    client = ros.client(node)
+    refused = client.set(
+        Parameter("d_gt", Parameter.Type.DOUBLE, 0.5),
+        Parameter("d_lt_eq", Parameter.Type.DOUBLE, 15.000001),
+        Parameter("i_gt", Parameter.Type.INTEGER, 0),
+    )
+    assert [r.successful for r in refused] == [False, False, False]
+    accepted = client.set(
+        Parameter("d_gt", Parameter.Type.DOUBLE, 0.6),
+        Parameter("i_lt_eq", Parameter.Type.INTEGER, 15),
+    )
+    assert [r.successful for r in accepted] == [True, True]
+
+
+def test_nan_items_pass_element_bounds_as_in_gpl(
+    ros: RosHarness, imported: tuple[Imported, types.ModuleType]
+) -> None:
+    node = _declared(ros, imported[1])
+    client = ros.client(node)
+    nan_items = client.set(
+        Parameter("da_lower", Parameter.Type.DOUBLE_ARRAY, [math.nan, 2.0]),
+        Parameter("da_element_bounds", Parameter.Type.DOUBLE_ARRAY, [math.nan]),
+    )
+    assert [r.successful for r in nan_items] == [True, True]
+    (below,) = client.set(Parameter("da_lower", Parameter.Type.DOUBLE_ARRAY, [math.nan, -1.0]))
+    assert not below.successful and "item 1" in below.reason
+
+
+def test_key_list_of_one_empty_string_imports_as_no_keys(
+    ros: RosHarness, imported: tuple[Imported, types.ModuleType]
+) -> None:
+    result, module = imported
+    assert result.data["parameters"]["joints"]["default"] == []
+    note = next(str(n) for n in result.notes if "joints" in str(n))
+    assert note.endswith('note: a key list of [""] means no keys: imported as []')
+    node = ros.node(args=["-p", "joints:=[a]", "-p", "gains.a.p:=2.0"])
+    cfg = module.ShapesParams.declare(node)
+    assert node.get_parameter("gains.a.p").value == 2.0
+    assert list(cfg.joints) == ["a"]
+
+
+def test_custom_validator_in_gpls_python_convention(
+    ros: RosHarness, imported: tuple[Imported, types.ModuleType]
+) -> None:
+    """A check returning "" accepts (GPL's Python convention); any other text refuses."""
+    result, module = imported
+    assert "An empty string also means\nvalid" in stub_text(result, "m")
+    node = _declared(ros, module)
+    client = ros.client(node)
+    (ok,) = client.set(Parameter("check", Parameter.Type.DOUBLE, 3.0))
+    (refused,) = client.set(Parameter("check", Parameter.Type.DOUBLE, -3.0))
+    assert ok.successful
+    assert not refused.successful and "must be positive" in refused.reason
+
+
+def test_top_level_key_list_message_names_the_top_level(tmp_path: Path) -> None:
+    schema = tmp_path / "top.yaml"
+    schema.write_text(
+        textwrap.dedent(
+            """\
+            genparams: 1
+            name: top
+            parameters:
+              joints: {type: string_array, default: ["a b"]}
+              "*": {for_each: joints, gain: {type: double, default: 1.0}}
+            """
+        ),
+        encoding="utf-8",
+    )
+    with pytest.raises(SchemaError) as error:
+        genparams.load_schema(schema)
+    assert "cannot name an entry of the top level" in str(error.value)
