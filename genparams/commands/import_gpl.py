@@ -71,7 +71,8 @@ def run(args: argparse.Namespace) -> int:
     if args.out_dir is not None:
         target = args.out_dir / f"{imported.name}.yaml"
     try:  # the result must be a schema genparams accepts, or nothing is written
-        load_schema(target or f"<{imported.name}>", text)
+        # Lines of its errors are lines of the schema text, which is not written.
+        load_schema(f"<schema imported from {args.gpl_file.name}, not written>", text)
     except SchemaError as exc:
         for problem in sorted(imported.warnings):
             print(problem, file=sys.stderr)
