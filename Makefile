@@ -7,7 +7,7 @@ PYTHON := $(VENV)/bin/python
 EXAMPLE := examples/camera_node
 
 
-.PHONY: venv lock test-latest browser demo demo-arm tour test check lint typecheck golden docs bench bench-quick bench-profile mutate mutate-sample clean
+.PHONY: venv lock test-latest browser demo import-node-demo demo-arm tour test check lint typecheck golden docs bench bench-quick bench-profile mutate mutate-sample clean
 
 # The development environment installs from requirements/dev.lock (every pin with its
 # hashes, from PyPI only); uv itself comes from requirements/uv.lock. genparams goes in
@@ -61,6 +61,12 @@ demo-arm: venv
 ## Rules, several classes, threads, remote access, lifecycle nodes (examples/motion); PART=rules picks one.
 tour: venv
 	$(PYTHON) examples/motion/tour.py $(PART)
+
+## A schema read from a running hand-written rclpy node (docs/import-node.md).
+import-node-demo: venv
+	@$(PYTHON) -m tests.import_node.hand_written_nodes hand_written_driver:driver >/dev/null & \
+	node=$$!; $(VENV)/bin/genparams import-node /hand_written_driver --timeout 30; \
+	code=$$?; kill $$node; exit $$code
 
 ## Lint, type-check (package, examples and generated code) and run every test.
 test: venv browser lint typecheck

@@ -30,9 +30,11 @@ def unique(stem: str) -> str:
 
 
 @contextmanager
-def demo_nodes(*specs: str, ros_args: tuple[str, ...] = ()) -> Iterator[subprocess.Popen[str]]:
-    """``python -m tests.tune.demo_nodes NAME:KIND...`` until the block ends."""
-    command = [sys.executable, "-m", "tests.tune.demo_nodes", *specs]
+def demo_nodes(
+    *specs: str, ros_args: tuple[str, ...] = (), module: str = "tests.tune.demo_nodes"
+) -> Iterator[subprocess.Popen[str]]:
+    """``python -m MODULE NAME:KIND...`` until the block ends (MODULE prints "ready")."""
+    command = [sys.executable, "-m", module, *specs]
     if ros_args:
         command += ["--", *ros_args]
     process = subprocess.Popen(

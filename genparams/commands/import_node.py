@@ -1,0 +1,71 @@
+"""genparams import-node NODE [-o SCHEMA] [--name NAME] [--timeout S]: a schema from a live node."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from genparams.paramsfile.ros_yaml import absolute, node_name_problem
+
+
+def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    parser = subparsers.add_parser(
+        "import-node",
+        help="write a schema for a running node (any language) from its parameter services",
+    )
+    parser.add_argument("node", metavar="NODE", help="the node, e.g. /camera/driver")
+    parser.add_argument("-o", "--output", type=Path, metavar="SCHEMA", help="default: stdout")
+    parser.add_argument("--name", help="the schema's name (default: the node's base name)")
+    parser.add_argument(
+        "--timeout",
+        type=float,
+        default=10.0,
+        metavar="SECONDS",
+        help="longest wait for the node's services and each answer (default 10)",
+    )
+    parser.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    node = absolute(args.node)
+    problem = node_name_problem(node)
+    if problem is not None:
+        print(f"genparams import-node: invalid node {args.node!r}: {problem}", file=sys.stderr)
+        return 2
+    from genparams.api import load_schema
+    from genparams.import_node.convert import import_node
+    from genparams.import_node.read import read_node
+    from genparams.integration.writing import write_all
+    from genparams.outputs.schema_yaml import schema_yaml
+    from genparams.schema.errors import SchemaError
+
+    try:
+        imported = import_node(node, read_node(node, args.timeout), args.name)
+    except TimeoutError as exc:
+        print(f"genparams import-node: {exc}", file=sys.stderr)
+        return 2
+    header = (
+        f"# genparams schema read from the running node {node} by `genparams import-node`.\n"
+        "# Its values at that moment are the defaults. Edit freely: this file is now the source.\n"
+    )
+    text = schema_yaml(imported.data, header)
+    try:  # the result must be a schema genparams accepts, or nothing is written
+        load_schema(f"<schema read from {node}, not written>", text)
+    except SchemaError as exc:
+        print(exc, file=sys.stderr)
+        print(f"genparams import-node: {node}: the schema read is not valid", file=sys.stderr)
+        return 2
+    for line in [*imported.notes, *imported.warnings]:
+        print(line, file=sys.stderr)
+    lost = imported.parameters - imported.imported
+    print(
+        f"imported {imported.imported} of {imported.parameters} parameters"
+        + (f"; {lost} left out (see warnings)" if lost else ""),
+        file=sys.stderr,
+    )
+    if args.output is None:
+        sys.stdout.write(text)
+    else:
+        write_all({args.output: text})
+    return 1 if imported.warnings else 0

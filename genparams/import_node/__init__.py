@@ -1,0 +1,1 @@
+"""``genparams import-node``: a schema from a running node, read over its parameter services."""

@@ -1,0 +1,122 @@
+"""What a running node reports of its parameters -> a genparams schema, as plain data.
+
+Each parameter's current value becomes its default and every descriptor field is
+kept: description, additional_constraints, read_only and the range with its step.
+Whatever a schema cannot state becomes a warning naming the parameter, and the
+parameter is left out, never silently changed.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+from genparams.runtime.naming import NODE_PARAMETERS, is_ros_token
+from genparams.runtime.types import TYPES_BY_ROS_TYPE
+
+NOT_SET = 0  # rcl_interfaces ParameterType.PARAMETER_NOT_SET
+
+
+@dataclass(frozen=True)
+class Reported:
+    """One parameter as the node's services report it (list, get, describe)."""
+
+    name: str
+    type: int  # the value's rcl_interfaces ParameterType
+    value: Any  # plain Python: bool, int, float, str, list
+    description: str = ""
+    additional_constraints: str = ""
+    read_only: bool = False
+    dynamic_typing: bool = False
+    integer_range: tuple[int, int, int] | None = None  # from, to, step
+    floating_point_range: tuple[float, float, float] | None = None
+
+
+@dataclass
+class Imported:
+    name: str
+    data: dict[str, Any]
+    warnings: list[str] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+    parameters: int = 0  # parameters the node reported, its own rclpy ones aside
+    imported: int = 0  # of them, in the schema
+
+
+def schema_name(node: str) -> str:
+    """The node's base name as a schema name (snake_case, starting with a letter)."""
+    base = node.rstrip("/").rpartition("/")[2]
+    name = re.sub(r"[^a-z0-9_]", "_", re.sub(r"(?<=[a-z0-9])([A-Z])", r"_\1", base).lower())
+    return name if name[:1].isalpha() else f"node_{name}"
+
+
+def import_node(node: str, reported: Sequence[Reported], name: str | None = None) -> Imported:
+    """A schema declaring what ``node`` declares, with its current values as defaults."""
+    result = Imported(name or schema_name(node), {})
+    tree: dict[str, Any] = {}
+    names = {r.name for r in reported}
+    for param in sorted(reported, key=lambda r: r.name):
+        if param.name in NODE_PARAMETERS:
+            result.notes.append(f"{node}: {param.name}: note: declared by rclpy itself: left out")
+            continue
+        result.parameters += 1
+        problem = _problem(param, names)
+        if problem is not None:
+            result.warnings.append(f"{node}: {param.name}: warning: {problem}: left out")
+            continue
+        leaf = _leaf(param)
+        *spaces, last = param.name.split(".")
+        namespace = tree
+        for part in spaces:
+            namespace = namespace.setdefault(part, {})
+        namespace[last] = leaf
+        result.imported += 1
+    result.data = {
+        "genparams": 1,
+        "name": result.name,
+        "description": f"Parameters of {node}, read from the running node.",
+        "parameters": tree,
+    }
+    return result
+
+
+def _problem(param: Reported, names: set[str]) -> str | None:
+    """Why a schema cannot state this parameter exactly, or None."""
+    parts = param.name.split(".")
+    if not all(is_ros_token(part) for part in parts):
+        return "its name is not made of ROS name tokens joined by '.'"
+    if any(".".join(parts[:n]) in names for n in range(1, len(parts))):
+        return f"{'.'.join(parts[:-1])!r} is a parameter too, so it cannot be a namespace"
+    if param.dynamic_typing:
+        return "dynamic_typing has no schema form yet"
+    if param.type == NOT_SET:
+        return "declared by type only, with no value: it has no schema form yet"
+    if param.type not in TYPES_BY_ROS_TYPE:
+        return f"unknown parameter type {param.type}"
+    is_array = TYPES_BY_ROS_TYPE[param.type].name.endswith("_array")
+    if is_array and (param.integer_range or param.floating_point_range):
+        return "a range on an array: ROS applies it to no item, genparams to every item"
+    for bounds in (param.integer_range, param.floating_point_range):
+        if bounds is not None and bounds[0] > bounds[1]:
+            return f"its range runs from {bounds[0]!r} down to {bounds[1]!r}"
+        if bounds is not None and any(isinstance(b, float) and math.isnan(b) for b in bounds):
+            return "its range has a NaN bound"
+    return None
+
+
+def _leaf(param: Reported) -> dict[str, Any]:
+    param_type = TYPES_BY_ROS_TYPE[param.type]
+    leaf: dict[str, Any] = {"type": param_type.name, "default": param.value}
+    if param.description:
+        leaf["description"] = param.description
+    if param.read_only:
+        leaf["read_only"] = True
+    bounds = param.integer_range or param.floating_point_range
+    if bounds is not None:
+        low, high, step = bounds
+        leaf["range"] = {"min": low, "max": high, **({"step": step} if step else {})}
+    if param.additional_constraints:
+        leaf["additional_constraints"] = param.additional_constraints
+    return leaf

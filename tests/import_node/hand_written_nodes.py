@@ -1,0 +1,87 @@
+"""Nodes that declare their parameters by hand, as most rclpy nodes do, in a process of their own.
+
+``python -m tests.import_node.hand_written_nodes NAME:KIND ...`` starts one node per
+argument (KIND: driver, dynamic) and prints "ready" once every node is declared.
+"""
+
+from __future__ import annotations
+
+import sys
+
+import rclpy
+from rcl_interfaces.msg import FloatingPointRange, IntegerRange, ParameterDescriptor
+from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
+from rclpy.node import Node
+from rclpy.parameter import Parameter
+
+
+def driver(name: str) -> Node:
+    """Every type, ranges with and without a step, read-only, text fields, nesting."""
+    node = Node(name)
+    node.declare_parameter("port", "/dev/ttyUSB0", ParameterDescriptor(description="Serial port."))
+    node.declare_parameter(
+        "baud_rate",
+        115200,
+        ParameterDescriptor(
+            description="Line speed.",
+            read_only=True,
+            integer_range=[IntegerRange(from_value=9600, to_value=921600, step=0)],
+        ),
+    )
+    node.declare_parameter(
+        "rate",
+        30.0,
+        ParameterDescriptor(
+            description="Publish rate [Hz].",
+            additional_constraints="Keep below the sensor's own rate.",
+            floating_point_range=[FloatingPointRange(from_value=1.0, to_value=100.0, step=0.5)],
+        ),
+    )
+    node.declare_parameter(
+        "ticks",
+        10,
+        ParameterDescriptor(integer_range=[IntegerRange(from_value=0, to_value=100, step=5)]),
+    )
+    node.declare_parameter("verbose", False)
+    node.declare_parameters(
+        "filter",
+        [
+            ("enabled", True, ParameterDescriptor(description="Run the filter.")),
+            ("weights", [0.25, 0.5, 0.25]),
+            ("window", [1, 2, 3]),
+            ("frames", ["base_link", "odom"]),
+            ("flags", [True, False]),
+        ],
+    )
+    node.declare_parameter("limits.lower.x", -1.5)
+    node.declare_parameter("magic", [b"\x01", b"\x02"])
+    return node
+
+
+def dynamic(name: str) -> Node:
+    """What a schema cannot state yet: dynamic typing and a declaration by type only."""
+    node = Node(name)
+    node.declare_parameter("gain", 2.0, ParameterDescriptor(description="Gain."))
+    node.declare_parameter("anything", 1, ParameterDescriptor(dynamic_typing=True))
+    node.declare_parameter("robot_ip", Parameter.Type.STRING)
+    return node
+
+
+KINDS = {"driver": driver, "dynamic": dynamic}
+
+
+def main(specs: list[str]) -> None:
+    rclpy.init()
+    executor = SingleThreadedExecutor()
+    for spec in specs:
+        name, _, kind = spec.partition(":")
+        executor.add_node(KINDS[kind](name))
+    print("ready", flush=True)
+    try:
+        executor.spin()
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])

@@ -1,0 +1,92 @@
+"""`genparams import-node`: a schema read from a hand-written node in another process; the
+generated class, declared on a fresh node, reproduces every descriptor and value."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+from typing import Any
+
+import pytest
+import yaml
+
+from tests.support import ROOT, RosHarness, ServiceClient, load_generated
+from tests.tune.support import demo_nodes, unique
+
+NODES = "tests.import_node.hand_written_nodes"
+FIELDS = ("type", "description", "additional_constraints", "read_only", "dynamic_typing")
+
+
+def import_node(node: str, *args: str) -> subprocess.CompletedProcess[str]:
+    command = [sys.executable, "-m", "genparams", "import-node", node, "--timeout", "30", *args]
+    return subprocess.run(command, cwd=ROOT, capture_output=True, text=True, timeout=120)
+
+
+def _ranges(descriptor: Any) -> list[tuple[Any, ...]]:
+    return [
+        (r.from_value, r.to_value, r.step)
+        for r in (*descriptor.integer_range, *descriptor.floating_point_range)
+    ]
+
+
+def _values(values: list[Any]) -> list[Any]:
+    return [list(v) if isinstance(v, (list, tuple)) or hasattr(v, "tolist") else v for v in values]
+
+
+def test_generated_class_reproduces_every_descriptor(ros: RosHarness, tmp_path: Path) -> None:
+    node = f"/{unique('driver')}"
+    with demo_nodes(f"{node[1:]}:driver", module=NODES):
+        done = import_node(node, "-o", str(tmp_path / "driver.yaml"))
+        assert done.returncode == 0, done.stderr
+        remote = ServiceClient(ros, node)
+        names = sorted(n for n in _list(remote) if n not in ("use_sim_time",))
+        names = [n for n in names if n != "start_type_description_service"]
+        theirs = remote.describe(*names)
+        their_values = remote.get(*names)
+    assert "imported 12 of 12 parameters" in done.stderr
+    module = load_generated(tmp_path / "driver.yaml", tmp_path)
+    fresh = ros.node()
+    cls = next(v for k, v in vars(module).items() if k.endswith("Params") and hasattr(v, "_SPEC"))
+    cls.declare(fresh)
+    client = ros.client(fresh)
+    ours = client.describe(*names)
+    for name, mine, original_descriptor in zip(names, ours, theirs, strict=True):
+        for field in FIELDS:
+            assert getattr(mine, field) == getattr(original_descriptor, field), (name, field)
+        assert _ranges(mine) == _ranges(original_descriptor), name
+    assert _values(client.get(*names)) == _values(their_values)
+
+
+def _list(client: Any) -> list[str]:
+    response = client.harness.wait(client.client.list_parameters([], 0))
+    return list(response.result.names)
+
+
+def test_what_has_no_schema_form_is_a_warning_and_left_out(tmp_path: Path) -> None:
+    node = f"/{unique('dynamic')}"
+    with demo_nodes(f"{node[1:]}:dynamic", module=NODES):
+        done = import_node(node)
+    assert done.returncode == 1
+    assert f"{node}: anything: warning: dynamic_typing has no schema form yet: left out" in (
+        done.stderr
+    )
+    assert f"{node}: robot_ip: warning: declared by type only" in done.stderr
+    assert "imported 1 of 3 parameters; 2 left out (see warnings)" in done.stderr
+    schema = yaml.safe_load(done.stdout)
+    assert schema["parameters"] == {
+        "gain": {"type": "double", "default": 2.0, "description": "Gain."}
+    }
+
+
+def test_a_node_that_is_not_there_exits_2() -> None:
+    done = import_node(f"/{unique('nobody')}", "--timeout", "1")
+    assert done.returncode == 2
+    assert "parameter services did not appear" in done.stderr
+    assert done.stdout == ""
+
+
+@pytest.mark.parametrize("bad", ["bad name!", "/{x}"])
+def test_an_invalid_node_name_exits_2(bad: str) -> None:
+    done = import_node(bad)
+    assert done.returncode == 2 and "invalid node" in done.stderr
