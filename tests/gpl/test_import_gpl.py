@@ -12,6 +12,7 @@ from pathlib import Path
 import pytest
 
 from genparams.cli import main
+from tests import corpus
 from tests.gpl.corpus_cases import CORPUS
 
 GOLDEN = Path(__file__).parent / "golden"
@@ -31,6 +32,12 @@ CASES = {
 }
 
 
+def case(name: str) -> Path:
+    """A real schema of CASES (the test skips where the corpus is absent)."""
+    corpus.folder("gpl")
+    return CASES[name]
+
+
 def run(capsys: pytest.CaptureFixture[str], *args: str) -> tuple[int, str, str]:
     code = main(["import-gpl", *args])
     captured = capsys.readouterr()
@@ -41,7 +48,7 @@ def run(capsys: pytest.CaptureFixture[str], *args: str) -> tuple[int, str, str]:
 def test_import_matches_golden(
     name: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    code, _, err = run(capsys, str(CASES[name]), "--out-dir", str(tmp_path))
+    code, _, err = run(capsys, str(case(name)), "--out-dir", str(tmp_path))
     assert code == 0, err
     written = sorted(p.name for p in tmp_path.iterdir())
     expected = sorted(p.name for p in GOLDEN.glob(f"{name}*"))
@@ -53,9 +60,9 @@ def test_import_matches_golden(
 def test_report_lists_custom_validators_and_required_parameters(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    code, _, err = run(capsys, str(CASES["diff_drive_controller"]), "-o", str(tmp_path / "d.yaml"))
+    code, _, err = run(capsys, str(case("diff_drive_controller")), "-o", str(tmp_path / "d.yaml"))
     assert code == 0
-    source = CASES["diff_drive_controller"]
+    source = case("diff_drive_controller")
     assert (
         f"{source}:4:5: diff_drive_controller.left_wheel_names.default_value: note: default [] "
         "breaks its own validator (must not be empty (not_empty)): imported as a required "
@@ -69,7 +76,7 @@ def test_report_lists_custom_validators_and_required_parameters(
 
 
 def test_stdout_when_no_output_is_given(capsys: pytest.CaptureFixture[str]) -> None:
-    code, out, _ = run(capsys, str(CASES["chained_filter"]))
+    code, out, _ = run(capsys, str(case("chained_filter")))
     assert code == 0
     assert out == (GOLDEN / "chained_filter.yaml").read_text("utf-8")
 
@@ -128,7 +135,7 @@ def test_bad_input_exits_2_and_writes_nothing(
 def test_adopt_marks_the_parameter(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     target = tmp_path / "cm.yaml"
     code, _, _ = run(
-        capsys, str(CASES["controller_manager"]), "-o", str(target), "--adopt",
+        capsys, str(case("controller_manager")), "-o", str(target), "--adopt",
         "overruns.print_warnings",
     )  # fmt: skip
     assert code == 0
@@ -138,7 +145,7 @@ def test_adopt_marks_the_parameter(tmp_path: Path, capsys: pytest.CaptureFixture
 
 def test_runs_as_a_command() -> None:
     result = subprocess.run(
-        [sys.executable, "-m", "genparams", "import-gpl", str(CASES["chained_filter"])],
+        [sys.executable, "-m", "genparams", "import-gpl", str(case("chained_filter"))],
         capture_output=True,
         text=True,
         check=False,
@@ -150,6 +157,7 @@ def write_goldens() -> None:
     GOLDEN.mkdir(exist_ok=True)
     for old in GOLDEN.iterdir():
         old.unlink()
+    corpus.folder("gpl")
     for source in CASES.values():
         main(["import-gpl", str(source), "--out-dir", str(GOLDEN)])
 
@@ -177,6 +185,7 @@ INVALID = CORPUS / "generate_parameter_library/generate_parameter_library_py_tes
 def test_files_gpl_refuses_are_refused_at_their_place(
     name: str, first_line: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
+    corpus.folder("gpl")
     source = INVALID / f"{name}.yaml"
     code, out, err = run(capsys, str(source), "--out-dir", str(tmp_path))
     assert (code, out, list(tmp_path.iterdir())) == (2, "", [])
