@@ -1,6 +1,6 @@
-"""Custom validators of the diff_drive_controller schema.
+"""Custom validators of the conveyor_controller schema.
 
-The schema references each as diff_drive_controller_checks:NAME.
+The schema references each as conveyor_controller_checks:NAME.
 
 Each takes the parameter's value (then the schema's args) and returns None
 when it is valid, or a reason (str) when it is not."""
@@ -13,19 +13,21 @@ from typing import Any
 
 def gt_eq_or_nan(value: Any, limit: float) -> str | None:
     """Every value (or item) is NaN or >= limit. GPL: control_filters::gt_eq_or_nan<>; used by
-    angular.z.max_acceleration, angular.z.max_deceleration_reverse, angular.z.max_jerk,
-    angular.z.max_velocity, linear.x.max_acceleration, linear.x.max_deceleration_reverse,
-    linear.x.max_jerk, linear.x.max_velocity."""
+    *.max_speed."""
     items = value if isinstance(value, (list, tuple)) else (value,)
     bad = [v for v in items if not (math.isnan(v) or v >= limit)]
     return f"must be NaN or >= {limit}, got {bad[0]!r}" if bad else None
 
 
+def interface_combinations(value: Any) -> str | None:
+    """GPL: conveyor_controller::interface_combinations; used by command_interfaces."""
+    # TODO: write the check GPL's C++ function made; this stub accepts every value.
+    return None
+
+
 def lt_eq_or_nan(value: Any, limit: float) -> str | None:
     """Every value (or item) is NaN or <= limit. GPL: control_filters::lt_eq_or_nan<>; used by
-    angular.z.max_acceleration_reverse, angular.z.max_deceleration, angular.z.min_jerk,
-    angular.z.min_velocity, linear.x.max_acceleration_reverse, linear.x.max_deceleration,
-    linear.x.min_jerk, linear.x.min_velocity."""
+    *.max_current."""
     items = value if isinstance(value, (list, tuple)) else (value,)
     bad = [v for v in items if not (math.isnan(v) or v <= limit)]
     return f"must be NaN or <= {limit}, got {bad[0]!r}" if bad else None
