@@ -83,8 +83,9 @@ def venv(wheel: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:
     started = time.monotonic()
     run([sys.executable, "-m", "venv", "--without-pip", folder], folder.parent)
     lock = ROOT / "requirements" / "dev.lock"
-    # uv comes with the development environment (requirements/uv.lock), its cache with it.
-    install = [VENV_BIN / "uv", "pip", "install", "--quiet", "--python", folder / "bin" / "python"]
+    # uv comes with the development environment (requirements/uv.lock); its cache keeps it quick.
+    python = folder / "bin" / "python"
+    install: list[str | Path] = [VENV_BIN / "uv", "pip", "install", "--quiet", "--python", python]
     run([*install, "--index-url", "https://pypi.org/simple", "--constraint", lock, wheel], folder)
     print(f"fresh venv with the wheel and its dependencies: {time.monotonic() - started:.1f} s")
     return folder
