@@ -138,11 +138,13 @@ def copy_repository(destination: Path) -> Path:
     return destination
 
 
-def build_wheel(source: Path, destination: Path) -> Path:
-    """Build genparams' wheel the way pip does for `pip install .` (isolated, with hatchling)."""
-    run(
-        [sys.executable, "-m", "pip", "wheel", "--no-deps", "--quiet", "-w", destination, "."],
-        source,
-    )
+def build_wheel(source: Path, destination: Path, *, isolated: bool = True) -> Path:
+    """Build genparams' wheel the way pip does for `pip install .` (isolated, with hatchling).
+
+    ``isolated=False`` builds with the hatchling of the test environment (the lock's).
+    """
+    isolation = [] if isolated else ["--no-build-isolation"]
+    pip_wheel = [sys.executable, "-m", "pip", "wheel", "--no-deps", *isolation, "--quiet"]
+    run([*pip_wheel, "-w", destination, "."], source)
     (wheel,) = destination.glob("genparams-*.whl")
     return wheel

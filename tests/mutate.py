@@ -39,12 +39,15 @@ from collections import Counter
 from collections.abc import Sequence
 from pathlib import Path
 
+from tests import corpus
+
 ROOT = Path(__file__).resolve().parent.parent
 MUTANTS = ROOT / "mutants"
 ACCEPTED = ROOT / "tests" / "mutation_accepted.txt"
 KILLED = ROOT / "tests" / "mutation_killed.txt"
 # Tests run once per mutant: property tests try a tenth as many examples (tests/budget.py).
-MUTATE_ENV = {"GENPARAMS_TEST_PROFILE": "mutate"}
+# They run from mutants/, so the real-world corpus is named where it is (tests/corpus.py).
+MUTATE_ENV = {"GENPARAMS_TEST_PROFILE": "mutate", corpus.ENV: str(corpus.location())}
 KILLERS = MUTANTS / "killers.txt"  # mutant, then the test that failed first under it
 MUTMUT = [sys.executable, "-m", "mutmut"]
 

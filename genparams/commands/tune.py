@@ -7,6 +7,10 @@ import sys
 
 from genparams.paramsfile.ros_yaml import absolute, node_name_problem
 
+# The page's web stack comes with the tune extra; a plain `pip install genparams` leaves it out.
+WEB_STACK = ("starlette", "uvicorn")
+INSTALL_HINT = "pip install 'genparams[tune]'"
+
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     parser = subparsers.add_parser(
@@ -25,13 +29,22 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 
 
 def run(args: argparse.Namespace) -> int:
+    try:
+        from genparams.tune.server import TuneServer
+    except ModuleNotFoundError as exc:
+        if (exc.name or "").partition(".")[0] not in WEB_STACK:
+            raise
+        print(
+            f"genparams tune: the tuning page needs the tune extra ({' and '.join(WEB_STACK)}):"
+            f" {INSTALL_HINT}",
+            file=sys.stderr,
+        )
+        return 2
     for node in args.nodes:
         problem = node_name_problem(absolute(node))
         if problem is not None:
             print(f"genparams tune: invalid node {node!r}: {problem}", file=sys.stderr)
             return 2
-    from genparams.tune.server import TuneServer
-
     server = TuneServer(
         args.host,
         args.port,

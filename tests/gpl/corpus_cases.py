@@ -1,4 +1,8 @@
-"""The real generate_parameter_library corpus: its schemas, params files and node sections."""
+"""The real generate_parameter_library corpus: its schemas, params files and node sections.
+
+The files are read from the corpus's gpl folder (tests/corpus.py): a test module that
+uses them first calls ``corpus.folder("gpl")``, which skips it where the corpus is absent.
+"""
 
 from __future__ import annotations
 
@@ -10,7 +14,9 @@ from typing import Any
 
 import yaml
 
-CORPUS = Path(__file__).parent / "corpus"
+from tests import corpus
+
+CORPUS = corpus.location() / "gpl"
 PARAMS_KEY = "ros__parameters"
 
 

@@ -12,23 +12,18 @@ from pathlib import Path
 import pytest
 
 from genparams.cli import main
-from tests.gpl.corpus_cases import CORPUS
+from tests import corpus
 
 GOLDEN = Path(__file__).parent / "golden"
-RC = CORPUS / "ros2_controllers"
-# A handful of real schemas covering every construct the import maps.
-CASES = {
-    "joint_trajectory_controller": RC / "joint_trajectory_controller/schema/"
-    "joint_trajectory_controller_parameters.yaml",  # map beside parameters, custom validators
-    "battery_state_broadcaster": RC / "battery_state_broadcaster/schema/"
-    "battery_state_broadcaster_parameters.yaml",  # map at the top level, NaN defaults
-    "chained_filter": RC / "chained_filter_controller/schema/chained_filter_parameters.yaml",
-    "diff_drive_controller": RC / "diff_drive_controller/schema/"
-    "diff_drive_controller_parameter.yaml",  # custom validators with arguments
-    "controller_manager": CORPUS / "ros2_control/controller_manager/schema/"
-    "controller_manager_parameters.yaml",  # `defaults` namespace, required parameters
-    "admittance_controller": CORPUS / "generate_parameter_library/example/schema/parameters.yaml",
-}
+SOURCES = Path(__file__).parent / "sources"
+# GPL files written for these tests, in real packages' shapes: each construct the import maps
+# (maps at the top and beside parameters, custom validators with and without arguments, NaN
+# defaults, a `defaults` namespace, required and open parameters). The real schemas of the
+# corpus are imported in tests/gpl/test_corpus.py.
+CASES = {"conveyor_controller": SOURCES / "conveyor_controller_parameters.yaml"}
+CONVEYOR = CASES["conveyor_controller"]
+# GPL's own files that GPL refuses, in the corpus (tests/corpus.py).
+INVALID = "generate_parameter_library/generate_parameter_library_py_test/schema_invalid"
 
 
 def run(capsys: pytest.CaptureFixture[str], *args: str) -> tuple[int, str, str]:
@@ -53,25 +48,25 @@ def test_import_matches_golden(
 def test_report_lists_custom_validators_and_required_parameters(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    code, _, err = run(capsys, str(CASES["diff_drive_controller"]), "-o", str(tmp_path / "d.yaml"))
+    code, _, err = run(capsys, str(CONVEYOR), "-o", str(tmp_path / "c.yaml"))
     assert code == 0
-    source = CASES["diff_drive_controller"]
     assert (
-        f"{source}:4:5: diff_drive_controller.left_wheel_names.default_value: note: default [] "
+        f"{CONVEYOR}:6:5: conveyor_controller.belts.default_value: note: default [] "
         "breaks its own validator (must not be empty (not_empty)): imported as a required "
         "parameter"
     ) in err.splitlines()
     assert (
-        "custom validators to implement in diff_drive_controller_checks (stubs in "
-        f"{tmp_path / 'diff_drive_controller_checks.py'}): gt_eq_or_nan, lt_eq_or_nan"
+        "custom validators to implement in conveyor_controller_checks (stubs in "
+        f"{tmp_path / 'conveyor_controller_checks.py'}): gt_eq_or_nan, interface_combinations, "
+        "lt_eq_or_nan"
     ) in err
-    assert err.rstrip().endswith("imported 44 of 44 parameters")
+    assert err.rstrip().endswith("imported 13 of 13 parameters")
 
 
 def test_stdout_when_no_output_is_given(capsys: pytest.CaptureFixture[str]) -> None:
-    code, out, _ = run(capsys, str(CASES["chained_filter"]))
+    code, out, _ = run(capsys, str(CONVEYOR))
     assert code == 0
-    assert out == (GOLDEN / "chained_filter.yaml").read_text("utf-8")
+    assert out == (GOLDEN / "conveyor_controller.yaml").read_text("utf-8")
 
 
 def test_what_cannot_be_mapped_is_a_warning_at_its_place(
@@ -126,19 +121,17 @@ def test_bad_input_exits_2_and_writes_nothing(
 
 
 def test_adopt_marks_the_parameter(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    target = tmp_path / "cm.yaml"
-    code, _, _ = run(
-        capsys, str(CASES["controller_manager"]), "-o", str(target), "--adopt",
-        "overruns.print_warnings",
-    )  # fmt: skip
+    target = tmp_path / "conveyor.yaml"
+    code, _, _ = run(capsys, str(CONVEYOR), "-o", str(target), "--adopt", "diagnostics.verbose")
     assert code == 0
-    assert "  overruns:\n    print_warnings:\n      type: bool\n" in target.read_text("utf-8")
+    assert "  diagnostics:\n    verbose:\n      type: bool\n" in target.read_text("utf-8")
     assert "      adopt: true\n" in target.read_text("utf-8")
+    assert "adopt" not in (GOLDEN / "conveyor_controller.yaml").read_text("utf-8")
 
 
 def test_runs_as_a_command() -> None:
     result = subprocess.run(
-        [sys.executable, "-m", "genparams", "import-gpl", str(CASES["chained_filter"])],
+        [sys.executable, "-m", "genparams", "import-gpl", str(CONVEYOR)],
         capture_output=True,
         text=True,
         check=False,
@@ -158,9 +151,6 @@ if __name__ == "__main__":
     write_goldens()
 
 
-INVALID = CORPUS / "generate_parameter_library/generate_parameter_library_py_test/schema_invalid"
-
-
 @pytest.mark.parametrize(
     "name, first_line",
     [
@@ -177,7 +167,7 @@ INVALID = CORPUS / "generate_parameter_library/generate_parameter_library_py_tes
 def test_files_gpl_refuses_are_refused_at_their_place(
     name: str, first_line: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    source = INVALID / f"{name}.yaml"
+    source = corpus.folder("gpl") / INVALID / f"{name}.yaml"
     code, out, err = run(capsys, str(source), "--out-dir", str(tmp_path))
     assert (code, out, list(tmp_path.iterdir())) == (2, "", [])
     assert err.splitlines()[0] == f"{source}:{first_line}"

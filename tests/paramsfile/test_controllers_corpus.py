@@ -13,9 +13,11 @@ from pathlib import Path
 import pytest
 
 from genparams.cli import main
+from tests import corpus
 
 HERE = Path(__file__).parent
-FILES = sorted((HERE / "corpus" / "ros2_controllers").glob("*/params/*.yaml"))
+CORPUS = corpus.folder("paramsfile")
+FILES = sorted((CORPUS / "ros2_controllers").glob("*/params/*.yaml"))
 MANIFEST = HERE / "deployments" / "controllers.manifest.yaml"
 UNCLAIMED = "no node of the manifest gets this section"
 
@@ -34,7 +36,7 @@ def test_only_real_problems_are_flagged(capsys: pytest.CaptureFixture[str]) -> N
         len(unclaimed) == 20
     )  # admittance, battery, chained filter, mecanum, ... : no schema here
     found = sorted(
-        (str(Path(line.split(":", 1)[0]).relative_to(HERE / "corpus")), line.split(": ")[1])
+        (str(Path(line.split(":", 1)[0]).relative_to(CORPUS)), line.split(": ")[1])
         for line in flagged
     )
     steering = "ros2_controllers/steering_controllers_library/params/"

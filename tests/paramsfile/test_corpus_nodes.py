@@ -23,11 +23,12 @@ from genparams.paramsfile.deployment import configured_nodes
 from genparams.paramsfile.explain import explain
 from genparams.paramsfile.manifest import read_manifest
 from genparams.paramsfile.params_reader import read_params_file
+from tests import corpus
 from tests.paramsfile.rcl_load import plain, started
 from tests.support import load_generated
 
 HERE = Path(__file__).parent
-CORPUS = HERE / "corpus"
+CORPUS = corpus.folder("paramsfile")
 CASES = [
     (
         HERE / "deployments" / "demos.manifest.yaml",

@@ -1,10 +1,10 @@
 """On every section of real params files, genparams and rcl agree on what a node gets.
 
 The files are the params files of ros2_controllers, ros2_control,
-ros2_control_demos and generate_parameter_library (tests/paramsfile/corpus,
-see SOURCES.md there). For every node a section names (a wildcard section
-stands for a node it matches), the values genparams reads for that node, in
-rcl's order, must be exactly the overrides a real node receives.
+ros2_control_demos and generate_parameter_library (the corpus's paramsfile
+folder: tests/corpus.py, and SOURCES.md there). For every node a section names
+(a wildcard section stands for a node it matches), the values genparams reads
+for that node, in rcl's order, must be exactly the overrides a real node receives.
 """
 
 from __future__ import annotations
@@ -17,9 +17,10 @@ import pytest
 
 from genparams.paramsfile.node_sections import sections_for
 from genparams.paramsfile.params_reader import read_params_file
+from tests import corpus
 from tests.paramsfile.rcl_load import RclRefusedError, file_args, overrides, plain
 
-CORPUS = Path(__file__).parent / "corpus"
+CORPUS = corpus.folder("paramsfile")
 FILES = sorted(CORPUS.glob("*/*/params/*.yaml"))
 
 

@@ -12,9 +12,10 @@ from pathlib import Path
 import pytest
 
 from genparams.cli import main
+from tests import corpus
 
 HERE = Path(__file__).parent
-DEMOS = sorted((HERE / "corpus" / "ros2_control_demos").glob("*/params/*.yaml"))
+DEMOS = sorted((corpus.folder("paramsfile") / "ros2_control_demos").glob("*/params/*.yaml"))
 MANIFEST = HERE / "deployments" / "demos.manifest.yaml"
 
 

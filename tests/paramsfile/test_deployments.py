@@ -20,6 +20,7 @@ from genparams.cli import main
 from genparams.paramsfile.check_params import Bound
 from genparams.paramsfile.explain import explain, overrides_document
 from genparams.paramsfile.params_reader import ParamsDocument, read_params_file
+from tests import corpus
 from tests.paramsfile.rcl_load import overrides, plain, started
 from tests.support import load_generated
 
@@ -199,7 +200,7 @@ def test_explain_matches_a_real_node(node: str, inputs: str, tmp_path: Path) -> 
 
 def test_a_list_of_mappings_is_read_as_rcl_reads_it(capsys: pytest.CaptureFixture[str]) -> None:
     """example_10's gpio_controller: command_interfaces: {vacuum: [{interfaces: [..]}]}."""
-    file = HERE.parent / "corpus" / "ros2_control_demos" / "example_10" / "params"
+    file = corpus.folder("paramsfile") / "ros2_control_demos" / "example_10" / "params"
     schema = str(SCHEMAS / "gpio_command_controller.yaml")
     node = ["--node", "/gpio_controller", *CONTROLLER]
     code, out = run(capsys, "check-params", schema, str(file / "rrbot_controllers.yaml"), *node)
