@@ -24,7 +24,8 @@ def gt_eq_or_nan(value: Any, limit: float) -> str | None:
 
 def interface_combinations(value: Any) -> str | None:
     """GPL: conveyor_controller::interface_combinations; used by command_interfaces."""
-    # TODO: write the check GPL's C++ function made; this stub accepts every value.
+    # TODO: port GPL's check (a C++ function, or a Python one returning "" when
+    # valid, which this stub may keep doing); until then it accepts every value.
     return None
 
 
