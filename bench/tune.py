@@ -23,7 +23,7 @@ os.environ.setdefault("ROS_AUTOMATIC_DISCOVERY_RANGE", "LOCALHOST")
 from playwright.sync_api import Page, sync_playwright
 
 from genparams.audit.walk import audit
-from genparams.tune.graph import ros_parameter
+from genparams.tune.checking import json_parameter
 from genparams.tune.server import TuneServer
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -82,7 +82,7 @@ def page_numbers(node: str) -> tuple[list[tuple[float, float]], list[float]]:
                 selector = '[data-param="group_0.p_0"]'
                 started = time.perf_counter()
                 server.graph.set_parameters(
-                    node, [ros_parameter("group_0.p_0", "double", value)], atomic=False
+                    node, [json_parameter("group_0.p_0", "double", value)], atomic=False
                 )
                 page.wait_for_function(
                     f"document.querySelector('{selector}').value === '{value:g}'", polling=5

@@ -21,6 +21,9 @@ Behaviours relied on (rclpy 7.1, ``rclpy/node.py``):
 - ``Node.undeclare_parameter`` deletes from ``_parameters`` and ``_descriptors``
   without calling any callback.
 - ``Node._parameter_overrides``: the values a node was started with.
+- ``Node._apply_descriptor(parameter, descriptor, check_read_only)`` is rclpy's
+  check of a value against a descriptor (read-only, type, range and step), the
+  first check of every set; given a descriptor it reads nothing of the node.
 - ``rclpy.lifecycle.Node._state_machine.current_state`` is ``(id, label)``.
 """
 
@@ -89,6 +92,18 @@ def set_with_descriptors(
 ) -> SetParametersResult:
     """One atomic change that may declare (new descriptors) and undeclare (NOT_SET) together."""
     return set_path(node)(list(parameters), dict(descriptors))
+
+
+def descriptor_check(
+    node: Node, parameter: Parameter, descriptor: ParameterDescriptor
+) -> SetParametersResult:
+    """rclpy's own verdict on setting ``parameter`` under ``descriptor``, without setting it.
+
+    The tuning page checks a value as the node would; any rclpy node runs the
+    check, since with a descriptor given it reads nothing of its own state.
+    """
+    result: SetParametersResult = node._apply_descriptor(parameter, descriptor, True)
+    return result
 
 
 def parameter_overrides(node: Node) -> dict[str, Parameter]:

@@ -34,7 +34,6 @@ from std_msgs.msg import String
 
 from genparams.runtime.schema_topic import SCHEMA_TOPIC_SUFFIX
 from genparams.tune.reader import (
-    TYPE_NAMES,
     ParameterReader,
     python_value,
     read_all,
@@ -47,20 +46,7 @@ SCHEMA_QOS = QoSProfile(
     reliability=ReliabilityPolicy.RELIABLE,
     durability=DurabilityPolicy.TRANSIENT_LOCAL,
 )
-ROS_TYPES = {name: ros_type for ros_type, name in TYPE_NAMES.items()}
 EventListener = Callable[[dict[str, Any]], None]
-
-
-def ros_parameter(name: str, type_name: str, value: Any) -> Parameter:
-    """A JSON value as an rclpy Parameter of the given schema type (never inferred)."""
-    ros_type = Parameter.Type(ROS_TYPES[type_name])
-    if type_name == "byte_array":
-        value = [bytes((int(b),)) for b in value]
-    elif type_name == "double":
-        value = float(value)
-    elif type_name == "double_array":
-        value = [float(v) for v in value]
-    return Parameter(name, ros_type, value)
 
 
 class Graph:
