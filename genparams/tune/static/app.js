@@ -5,7 +5,7 @@ import { InputError, diffTable, el, mapGroup, row, section } from "./form.js";
 // pending: edits not applied yet; drafts: values being typed (checked, not applied);
 // applying: the edits of the apply in flight and the names the node changed meanwhile.
 const page = { readOnly: false, node: null, view: null, pending: new Map(), drafts: new Map(),
-  applying: null, reload: null, checkTimer: null };
+  applying: null, reload: null, checkTimer: null, checks: 0 };
 const CHECK_DELAY_MS = 150;
 
 function status(text) { document.getElementById("status").textContent = text; }
@@ -68,9 +68,16 @@ function showNote(name, attribute, text) {
 // The server's answer, row by row: the node's reason, and the checks only the node can run.
 function showVerdicts(check) {
   for (const result of check.results) {
+    markRow(result.name, result.successful ? "ok" : "refused");
     showError(result.name, result.successful ? "" : result.reason);
     showNote(result.name, "data-param-note", result.not_checked.join(" · "));
   }
+}
+
+// Each row says where its value stands: checking, ok or refused (data-verdict).
+function markRow(name, verdict) {
+  const row = page.view?.form.querySelector(`[data-row="${CSS.escape(name)}"]`);
+  if (row) row.dataset.verdict = verdict;
 }
 
 // Edits as the API takes them; a value the page could not type is shown and not sent.
@@ -80,6 +87,7 @@ function typedEdits(edits) {
   for (const [name, value] of edits) {
     if (value instanceof InputError) {
       showError(name, `${name}: ${value.message}`);
+      markRow(name, "refused");
       typed = false;
       continue;
     }
@@ -103,6 +111,7 @@ async function applyEdits(edits, atomic) {
   let ok = true;
   for (const result of results) {
     showError(result.name, result.successful ? "" : result.reason || "rejected by the node");
+    markRow(result.name, result.successful ? "ok" : "refused");
     ok &&= result.successful;
   }
   status(ok ? `applied ${params.length} change(s)` : "the node rejected the change");
@@ -122,17 +131,20 @@ async function checkEdits() {
   const params = typedEdits(edits);
   if (!params || !params.length) return;
   const node = page.node;
+  const asked = ++page.checks;  // an answer to an older question is not shown
   const check = await api.check(node, params).catch(() => null);
-  if (check && node === page.node) showVerdicts(check);
+  if (check && node === page.node && asked === page.checks) showVerdicts(check);
 }
 
 function onDraft(name, value) {
   page.drafts.set(name, value);
+  markRow(name, "checking");
   scheduleCheck();
 }
 
 function onEdit(name, value) {
   page.drafts.delete(name);
+  markRow(name, "checking");
   if (liveMode()) {
     applyEdits([[name, value]], false).then((ok) => {
       if (!ok && !page.pending.has(name)) page.pending.set(name, value);
