@@ -81,7 +81,6 @@ def params_class(kind: str, workdir: Path) -> type:
     if written is not None:
         text = genparams.generate(*written)
     else:
-
         text = genparams.generate(SCHEMAS[kind])
     path = workdir / f"{kind}_params.py"
     path.write_text(text, encoding="utf-8")

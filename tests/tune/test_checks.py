@@ -11,6 +11,7 @@ in flight.
 from __future__ import annotations
 
 import json
+import re
 import urllib.error
 import urllib.request
 from collections.abc import Iterator
@@ -26,21 +27,23 @@ from tests.edge_values import EDGES, SCALAR_EDGES, TOLERANCE, Edge
 from tests.support import RosHarness, ServiceClient
 from tests.tune.support import CHROMIUM, CHROMIUM_ARGS, demo_nodes, eventually, unique
 
-EDGES_NODE, CHECKS_NODE = (f"/{unique(s)}" for s in ("check_edges", "check_rules"))
+EDGES_NODE, CHECKS_NODE, ARM_NODE = (
+    f"/{unique(s)}" for s in ("check_edges", "check_rules", "check_arm")
+)
 TRUSTED = ("tests.custom_checks", "node_only_checks")
 
 
 @pytest.fixture(scope="module")
 def nodes() -> Iterator[None]:
-    with demo_nodes(f"{EDGES_NODE[1:]}:edges", f"{CHECKS_NODE[1:]}:checks"):
+    with demo_nodes(f"{EDGES_NODE[1:]}:edges", f"{CHECKS_NODE[1:]}:checks", f"{ARM_NODE[1:]}:arm"):
         yield
 
 
 @pytest.fixture(scope="module")
 def server(nodes: None) -> Iterator[TuneServer]:
-    tune = TuneServer(nodes=(EDGES_NODE, CHECKS_NODE), trusted_validators=TRUSTED)
+    tune = TuneServer(nodes=(EDGES_NODE, CHECKS_NODE, ARM_NODE), trusted_validators=TRUSTED)
     tune.start()
-    tune.graph.wait_for_schemas([EDGES_NODE, CHECKS_NODE], timeout=10.0)
+    tune.graph.wait_for_schemas([EDGES_NODE, CHECKS_NODE, ARM_NODE], timeout=10.0)
     try:
         yield tune
     finally:
@@ -86,15 +89,10 @@ def post(server: TuneServer, path: str, body: Any) -> tuple[int, dict[str, Any]]
         return exc.code, json.loads(exc.read())
 
 
-def types_of(server: TuneServer, node: str) -> dict[str, str]:
-    schema = server.graph.schema(node)
-    assert schema is not None
-    return {p["name"]: p["type"] for c in schema["classes"] for p in c["parameters"]}
-
-
 def check(server: TuneServer, node: str, *edits: tuple[str, Any]) -> dict[str, Any]:
-    types = types_of(server, node)
-    params = [{"name": n, "type": types[n], "value": v} for n, v in edits]
+    """The check route's answer; each value goes with the type the node holds."""
+    held = {p["name"]: p["type"] for p in server.graph.read_node(node)}
+    params = [{"name": n, "type": held[n], "value": v} for n, v in edits]
     status, answer = post(server, "api/check", {"node": node, "params": params})
     assert status == 200, answer
     return answer
@@ -134,6 +132,28 @@ def test_the_check_route_gives_the_node_verdict(
     same_verdict(answer, node)
     (result,) = answer["results"]
     assert (result["successful"], result["reason"]) == (node.successful, node.reason or None)
+
+
+# Mapped entries, the keys that make them, and an old name (alias) of a parameter.
+ARM_EDITS = [
+    [("gains.shoulder.p", 2.0)],
+    [("gains.shoulder.p", -1.0)],
+    [("gains.elbow.i", -0.5), ("gains.shoulder.p", 0.5)],
+    [("joints", ["shoulder", "shoulder"])],
+    [("joints", ["shoulder", "bad key!"])],
+    [("joints", ["shoulder", "elbow", "wrist"])],
+    [("max_speed", 3.5)],
+    [("speed_limit", 2.0)],
+    [("speed_limit", 3.5)],
+]
+
+
+@pytest.mark.parametrize("edits", ARM_EDITS, ids=repr)
+def test_mapped_entries_and_old_names_answer_as_the_node(
+    edits: list[tuple[str, Any]], server: TuneServer, ros_harness: RosHarness
+) -> None:
+    answer = check(server, ARM_NODE, *edits)
+    same_verdict(answer, node_verdict(client(ros_harness, ARM_NODE), *edits))
 
 
 # A representative subset through the real page: edges and sides of each kind of check.
@@ -183,16 +203,14 @@ def error(page: Page, name: str):  # type: ignore[no-untyped-def]
     return page.locator(f'[data-param-error="{name}"]')
 
 
+SETTLED = re.compile("^(ok|refused)$")
+
+
 def shown_verdict(page: Page, name: str) -> tuple[bool, str | None]:
-    expect(row(page, name)).to_have_attribute("data-verdict", _settled(), timeout=10_000)
+    """The verdict a row shows once the server answered: ok, or refused and why."""
+    expect(row(page, name)).to_have_attribute("data-verdict", SETTLED, timeout=10_000)
     verdict = row(page, name).get_attribute("data-verdict")
     return verdict == "ok", error(page, name).text_content() or None
-
-
-def _settled() -> Any:
-    import re
-
-    return re.compile("^(ok|refused)$")
 
 
 def test_the_page_subset_covers_every_kind(server: TuneServer) -> None:
@@ -297,9 +315,10 @@ def test_rules_and_custom_validators_show_in_the_page_before_apply(
     remote = client(ros_harness, CHECKS_NODE)
     open_node(page, server, CHECKS_NODE, live=False)
     enter(page, "low", "9")
+    (high,) = remote.get("high")
     assert shown_verdict(page, "low") == (
         False,
-        f"rule 'low_below_high' broken: low < high is false for low=9, high={remote.get('high')[0]}",
+        f"rule 'low_below_high' broken: low < high is false for low=9, high={high}",
     )
     enter(page, "low", "1")
     enter(page, "even", "3")
