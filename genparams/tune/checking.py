@@ -36,17 +36,10 @@ from rclpy.parameter import Parameter
 
 from genparams.runtime.binding import check_each
 from genparams.runtime.naming import ENTRY_KEY, join_prefix
+from genparams.runtime.published_spec import class_spec
 from genparams.runtime.rclpy_internals import descriptor_check
 from genparams.runtime.rule_check import violations
-from genparams.runtime.spec import (
-    CompiledParam,
-    CompiledSchema,
-    ParamSpec,
-    RuleSpec,
-    SchemaSpec,
-    compile_uncached,
-)
-from genparams.runtime.tree import Group
+from genparams.runtime.spec import CompiledParam, CompiledSchema, compile_uncached
 from genparams.runtime.types import TYPES
 from genparams.runtime.validators import Custom, Validator
 
@@ -141,55 +134,13 @@ class ClassChecks:
         return None
 
 
-def _param_spec(described: Mapping[str, Any], name: str) -> ParamSpec:
-    ros_range = described.get("range")
-    return ParamSpec(
-        name=name,
-        type=described["type"],
-        required=bool(described.get("required", False)),
-        read_only=bool(described.get("read_only", False)),
-        range=None
-        if ros_range is None
-        else (ros_range["min"], ros_range["max"], ros_range.get("step", 0)),
-        choices=None if described.get("choices") is None else tuple(described["choices"]),
-        validators=tuple((rule, argument) for rule, argument in described.get("validators", ())),
-    )
-
-
 def _entry_pattern(template: str) -> re.Pattern[str]:
-    return re.compile(
-        r"\.".join(
-            "[^.]+" if part == ENTRY_KEY else re.escape(part) for part in template.split(".")
-        )
-    )
+    parts = ("[^.]+" if part == ENTRY_KEY else re.escape(part) for part in template.split("."))
+    return re.compile(r"\.".join(parts))
 
 
 def compile_class(body: Mapping[str, Any], trusted: Sequence[str]) -> ClassChecks:
-    prefix = str(body.get("prefix", ""))
-
-    def relative(name: str) -> str:
-        if prefix and not name.startswith(prefix + "."):
-            raise SchemaMessageError(f"{name!r} is not under the class prefix {prefix!r}")
-        return name[len(prefix) + 1 :] if prefix else name
-
-    specs = [_param_spec(p, relative(p["name"])) for p in body.get("parameters", ())]
-    groups: dict[str, type[Group]] = {}
-    for fixed in specs:  # every namespace that holds a fixed parameter
-        parts = fixed.name.split(".")
-        groups.update((".".join(parts[:i]), Group) for i in range(1, len(parts)))
-    maps = {}
-    for group in body.get("maps", ()):
-        path = relative(group["path"]) if group["path"] != prefix else ""
-        maps[path] = relative(group["for_each"])
-        head = f"{path}.{ENTRY_KEY}" if path else ENTRY_KEY
-        groups[head] = Group
-        specs.extend(_param_spec(f, f"{head}.{f['name']}") for f in group.get("fields", ()))
-    rules = tuple(
-        RuleSpec(r["name"], r["check"], r.get("description", "")) for r in body.get("rules", ())
-    )
-    compiled = compile_uncached(
-        SchemaSpec(str(body.get("class", "")), tuple(specs), groups, maps, rules)
-    )
+    compiled = compile_uncached(class_spec(body))
 
     def runnable_here(param: CompiledParam) -> CompiledParam:
         checks = tuple(runnable(check, trusted) for check in param.checks)
@@ -201,15 +152,13 @@ def compile_class(body: Mapping[str, Any], trusted: Sequence[str]) -> ClassCheck
         templates={n: runnable_here(p) for n, p in compiled.templates.items()},
     )
     entries = tuple((_entry_pattern(name), p) for name, p in compiled.templates.items())
-    return ClassChecks(prefix, compiled, entries)
+    return ClassChecks(str(body["prefix"]), compiled, entries)
 
 
 def compile_message(message: Mapping[str, Any], trusted: Sequence[str]) -> tuple[ClassChecks, ...]:
     """Every class of a node's schema message; SchemaMessageError if it is not one."""
     try:
         return tuple(compile_class(body, trusted) for body in message["classes"])
-    except SchemaMessageError:
-        raise
     except Exception as exc:  # a message is data from the network: any shape may come
         raise SchemaMessageError(f"{type(exc).__name__}: {exc}") from None
 

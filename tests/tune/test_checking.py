@@ -11,11 +11,13 @@ from tests.support import RosHarness
 
 
 def message(*parameters: dict[str, Any], prefix: str = "", **body: Any) -> dict[str, Any]:
-    return {"classes": [{"class": "t", "prefix": prefix, "parameters": list(parameters), **body}]}
+    described = {"class": "t", "prefix": prefix, "parameters": list(parameters)}
+    return {"classes": [{**described, "maps": [], "rules": [], **body}]}
 
 
 def param(name: str, type_name: str = "int", **more: Any) -> dict[str, Any]:
-    return {"name": name, "type": type_name, **more}
+    described = {"required": False, "default": 0, "read_only": False, "range": None}
+    return {"name": name, "type": type_name, **described, "choices": None, "validators": [], **more}
 
 
 @pytest.mark.parametrize(
