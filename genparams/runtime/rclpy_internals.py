@@ -21,6 +21,9 @@ Behaviours relied on (rclpy 7.1, ``rclpy/node.py``):
 - ``Node.undeclare_parameter`` deletes from ``_parameters`` and ``_descriptors``
   without calling any callback.
 - ``Node._parameter_overrides``: the values a node was started with.
+- ``Node._check_undeclared_parameters(parameter_list)`` refuses a set naming
+  undeclared parameters; it reads ``_parameters`` and
+  ``_allow_undeclared_parameters`` only (its message leaves out the first name).
 - ``Node._apply_descriptor(parameter, descriptor, check_read_only)`` is rclpy's
   check of a value against a descriptor (read-only, type, range and step), the
   first check of every set; given a descriptor it reads nothing of the node.
@@ -29,10 +32,12 @@ Behaviours relied on (rclpy 7.1, ``rclpy/node.py``):
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Collection, Mapping, Sequence
+from types import SimpleNamespace
 from typing import Any
 
 from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
+from rclpy.exceptions import ParameterNotDeclaredException
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
@@ -104,6 +109,19 @@ def descriptor_check(
     """
     result: SetParametersResult = node._apply_descriptor(parameter, descriptor, True)
     return result
+
+
+def undeclared_check(parameters: Sequence[Parameter], declared: Collection[str]) -> str | None:
+    """rclpy's refusal, in its own words, of a set naming parameters not in ``declared``
+    (on a node that allows no undeclared parameters), or None."""
+    holder = SimpleNamespace(
+        _parameters=dict.fromkeys(declared), _allow_undeclared_parameters=False
+    )
+    try:
+        Node._check_undeclared_parameters(holder, list(parameters))  # type: ignore[arg-type]
+    except ParameterNotDeclaredException as exc:
+        return str(exc)
+    return None
 
 
 def parameter_overrides(node: Node) -> dict[str, Parameter]:

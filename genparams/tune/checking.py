@@ -30,14 +30,13 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 from rcl_interfaces.msg import FloatingPointRange, IntegerRange, ParameterDescriptor
-from rclpy.exceptions import ParameterNotDeclaredException
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
 from genparams.runtime.binding import check_each
 from genparams.runtime.naming import ENTRY_KEY, join_prefix
 from genparams.runtime.published_spec import class_spec
-from genparams.runtime.rclpy_internals import descriptor_check
+from genparams.runtime.rclpy_internals import descriptor_check, undeclared_check
 from genparams.runtime.rule_check import violations
 from genparams.runtime.spec import CompiledParam, CompiledSchema, compile_uncached
 from genparams.runtime.types import TYPES
@@ -219,11 +218,11 @@ class ProposalCheck:
 
     def run(self, proposed: Sequence[Parameter]) -> tuple[str | None, list[Verdict]]:
         verdicts = {p.name: Verdict(p.name, [], []) for p in proposed}
-        undeclared = [p.name for p in proposed if p.name not in self.current]
-        if undeclared:
-            reason = str(ParameterNotDeclaredException(undeclared))
-            for name in undeclared:
-                verdicts[name].reasons.append(reason)
+        reason = undeclared_check(proposed, self.current)
+        if reason is not None:
+            for parameter in proposed:
+                if parameter.name not in self.current:
+                    verdicts[parameter.name].reasons.append(reason)
             return reason, list(verdicts.values())
         # rclpy's descriptor check: the first value it refuses refuses the set.
         first = None

@@ -10,6 +10,7 @@ import importlib.metadata
 import inspect
 
 from rcl_interfaces.msg import IntegerRange, ParameterDescriptor, SetParametersResult
+from rclpy.exceptions import ParameterNotDeclaredException
 from rclpy.lifecycle import Node as LifecycleNode
 from rclpy.node import Node
 from rclpy.parameter import Parameter
@@ -155,3 +156,17 @@ def test_descriptor_check_is_the_verdict_of_a_set_and_stores_nothing(ros: RosHar
     assert wrong.reason.startswith("Wrong parameter type")
     frozen = ParameterDescriptor(read_only=True, type=Parameter.Type.INTEGER.value)
     assert not internals.descriptor_check(other, Parameter("n", value=1), frozen).successful
+
+
+def test_undeclared_check_is_the_refusal_of_a_set(ros: RosHarness) -> None:
+    node = ros.node()
+    node.declare_parameter("a", 1)
+    for names in (["y"], ["a", "y", "z"], ["a"]):
+        parameters = [Parameter(name, value=1) for name in names]
+        verdict = internals.undeclared_check(parameters, ["a"])
+        try:
+            node.set_parameters_atomically(parameters)
+        except ParameterNotDeclaredException as exc:
+            assert verdict == str(exc)
+        else:
+            assert verdict is None

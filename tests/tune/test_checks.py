@@ -433,3 +433,14 @@ def test_a_change_during_the_apply_ends_in_the_form(
     finally:
         page.unroute("**/api/set")
         remote.set(Parameter("low", value=1))
+
+
+def test_a_parameter_the_node_does_not_declare_answers_as_the_node(
+    server: TuneServer, ros_harness: RosHarness
+) -> None:
+    remote = client(ros_harness, CHECKS_NODE)
+    for edits in ([("no_such", 1)], [("low", 2), ("no_such", 1), ("nor_this", 2)]):
+        params = [{"name": n, "type": "int", "value": v} for n, v in edits]
+        status, answer = post(server, "api/check", {"node": CHECKS_NODE, "params": params})
+        assert status == 200, answer
+        same_verdict(answer, node_verdict(remote, *edits))
