@@ -65,3 +65,13 @@ def test_a_node_with_a_bad_message_is_still_checked_by_its_descriptors(ros: RosH
     unknown = checker.check("/n", None, current, [("y", "int", 2)])
     assert unknown["reason"].startswith("Invalid access to undeclared parameter(s)")
     assert not unknown["results"][0]["successful"]
+
+
+def test_trusted_modules_are_named_on_the_command_line() -> None:
+    from genparams.cli import build_parser
+
+    args = build_parser().parse_args(
+        ["tune", "--trust-validators", "my_robot.checks", "--trust-validators", "other"]
+    )
+    assert args.trust_validators == ["my_robot.checks", "other"]
+    assert build_parser().parse_args(["tune"]).trust_validators == []
