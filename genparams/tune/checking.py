@@ -254,14 +254,23 @@ class ProposalCheck:
             for parameter in proposed:  # each reason names its parameter first
                 alone = check_each(owned, [parameter])[1]
                 verdicts[parameter.name].reasons.extend(alone)
-            return reasons
-        by_name = {
-            checks.relative(p.name): typed[owned[p.name]] for p in proposed if p.name in owned
+        # The node evaluates the rules only when every value passed its own checks; they
+        # are shown anyway on the values that did, so a rule shows before the last fix.
+        passing = {
+            checks.relative(name): typed[param]
+            for name, param in owned.items()
+            if param in typed and not verdicts[name].reasons
         }
-        rules = checks.compiled.rules_reading(by_name)
-        if not rules:
-            return []
-        values = dict(by_name)
+        broken = self.broken_rules(checks, passing, verdicts)
+        return reasons or broken
+
+    def broken_rules(
+        self, checks: ClassChecks, proposed: dict[str, Any], verdicts: dict[str, Verdict]
+    ) -> list[str]:
+        """A reason per rule the proposal (relative names, typed) breaks over the node's values;
+        each goes to every proposed parameter the rule reads."""
+        rules = checks.compiled.rules_reading(proposed)
+        values = dict(proposed)
         for rule in rules:
             for name in rule.parameters:
                 if name not in values:
@@ -269,11 +278,10 @@ class ProposalCheck:
         broken = []
         for rule in rules:
             reason = violations([rule], values, checks.full)
-            if reason:
-                broken.extend(reason)
-                for name in rule.parameters:
-                    if checks.full(name) in verdicts:
-                        verdicts[checks.full(name)].reasons.extend(reason)
+            broken.extend(reason)
+            for name in rule.parameters:
+                if reason and checks.full(name) in verdicts:
+                    verdicts[checks.full(name)].reasons.extend(reason)
         return broken
 
     def current_value(self, checks: ClassChecks, name: str) -> Any:
@@ -324,7 +332,11 @@ class Checker:
                 typed.append(json_parameter(str(name), type_name, value))
             except ValueError as exc:
                 refused[str(name)] = Verdict(str(name), [str(exc)], [])
-        reason, verdicts = ProposalCheck(self.node, classes, current).run(typed)
+        try:
+            reason, verdicts = ProposalCheck(self.node, classes, current).run(typed)
+        except SchemaMessageError as exc:  # a rule reads a parameter the node does not hold
+            problem = f"its schema message cannot be checked here: {exc}"
+            reason, verdicts = ProposalCheck(self.node, (), current).run(typed)
         if refused:
             reason = "; ".join(v.reasons[0] for v in refused.values())
         by_name = {v.name: v for v in (*verdicts, *refused.values())}

@@ -276,6 +276,7 @@ def test_rules_and_custom_validators_answer_as_the_node(
         [("even", 3)],
         [("even", 4)],
         [("even", 3), ("label", "a b")],
+        [("low", 9), ("even", 3)],
         [("share", 2.0), ("low", 9)],
     ):
         answer = check(server, CHECKS_NODE, *edits)
@@ -283,6 +284,13 @@ def test_rules_and_custom_validators_answer_as_the_node(
     rule = check(server, CHECKS_NODE, ("low", 4), ("high", 3))
     assert [r["successful"] for r in rule["results"]] == [False, False]
     assert all("rule 'low_below_high' broken" in r["reason"] for r in rule["results"])
+    # The node names only the value that fails its own check; the page shows the rule too.
+    both = check(server, CHECKS_NODE, ("low", 9), ("even", 3))
+    same_verdict(both, node_verdict(remote, ("low", 9), ("even", 3)))
+    assert both["reason"] == "even: 3 is odd (tests.custom_checks:is_even)"
+    low, even = both["results"]
+    assert low["reason"].startswith("rule 'low_below_high' broken: low < high is false")
+    assert even["reason"] == both["reason"]
 
 
 def test_a_custom_validator_the_server_cannot_run_is_left_to_the_node(
