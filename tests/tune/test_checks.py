@@ -410,7 +410,11 @@ def test_an_integer_typed_with_a_fraction_is_refused_in_the_page(
     expect(error(page, "low")).to_have_text("low: expected integer, got double 2.5")
     enter(page, "high", "")
     expect(error(page, "high")).to_have_text("high: enter a number")
-    assert client(ros_harness, CHECKS_NODE).get("low", "high") == [1, 5]
+    enter(page, "even", "9223372036854775808")  # past 2^53: sent with every digit
+    expect(error(page, "even")).to_have_text(
+        "even: integer 9223372036854775808 does not fit in int64"
+    )
+    assert client(ros_harness, CHECKS_NODE).get("low", "high", "even") == [1, 5, 2]
 
 
 # A change made while the page's own apply is in flight -----------------------------------
