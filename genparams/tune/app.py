@@ -131,8 +131,10 @@ class TuneApp:
             return JSONResponse({"error": f"bad request: {exc}"}, status_code=400)
 
         def answer() -> dict[str, Any]:
-            current = self.graph.read_node(node)
-            return self.checker.check(node, self.graph.schema(node), current, edits)
+            message = self.graph.schema(node)
+            wanted = self.checker.wanted(node, message, edits)
+            declared, current = self.graph.read_parameters(node, wanted)
+            return self.checker.check(node, message, current, edits, declared)
 
         try:
             return JSONResponse(await run_in_threadpool(answer))

@@ -25,7 +25,7 @@ mapped entries.
 from __future__ import annotations
 
 import re
-from collections.abc import Mapping, Sequence
+from collections.abc import Collection, Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -211,17 +211,19 @@ class ProposalCheck:
         node: Node,
         classes: Sequence[ClassChecks],
         current: Sequence[Mapping[str, Any]],
+        declared: Collection[str],
     ) -> None:
         self.node = node
         self.classes = classes
         self.current = {p["name"]: p for p in current}
+        self.declared = declared
 
     def run(self, proposed: Sequence[Parameter]) -> tuple[str | None, list[Verdict]]:
         verdicts = {p.name: Verdict(p.name, [], []) for p in proposed}
-        reason = undeclared_check(proposed, self.current)
+        reason = undeclared_check(proposed, self.declared)
         if reason is not None:
             for parameter in proposed:
-                if parameter.name not in self.current:
+                if parameter.name not in self.declared:
                     verdicts[parameter.name].reasons.append(reason)
             return reason, list(verdicts.values())
         # rclpy's descriptor check: the first value it refuses refuses the set.
@@ -316,14 +318,33 @@ class Checker:
         found = cached[1]
         return ((), found) if isinstance(found, str) else (found, None)
 
+    def wanted(
+        self,
+        node_name: str,
+        message: Mapping[str, Any] | None,
+        edits: Sequence[tuple[str, Any, Any]],
+    ) -> list[str]:
+        """The parameters a check of ``edits`` reads: the edited ones and those rules read."""
+        names = [str(name) for name, _, _ in edits]
+        for checks in self.classes(node_name, message)[0]:
+            names.extend(checks.full(n) for rule in checks.compiled.rules for n in rule.parameters)
+        return names
+
     def check(
         self,
         node_name: str,
         message: Mapping[str, Any] | None,
         current: Sequence[Mapping[str, Any]],
         edits: Sequence[tuple[str, Any, Any]],
+        declared: Collection[str] | None = None,
     ) -> dict[str, Any]:
-        """The node's answer to setting ``edits`` (name, type, JSON value) atomically."""
+        """The node's answer to setting ``edits`` (name, type, JSON value) atomically.
+
+        ``current``: what the node holds of the parameters :meth:`wanted` names (or all);
+        ``declared``: every name the node declares (by default, those of ``current``).
+        """
+        if declared is None:
+            declared = {p["name"] for p in current}
         classes, problem = self.classes(node_name, message)
         typed: list[Parameter] = []
         refused: dict[str, Verdict] = {}
@@ -333,10 +354,10 @@ class Checker:
             except ValueError as exc:
                 refused[str(name)] = Verdict(str(name), [str(exc)], [])
         try:
-            reason, verdicts = ProposalCheck(self.node, classes, current).run(typed)
+            reason, verdicts = ProposalCheck(self.node, classes, current, declared).run(typed)
         except SchemaMessageError as exc:  # a rule reads a parameter the node does not hold
             problem = f"its schema message cannot be checked here: {exc}"
-            reason, verdicts = ProposalCheck(self.node, (), current).run(typed)
+            reason, verdicts = ProposalCheck(self.node, (), current, declared).run(typed)
         if refused:
             reason = "; ".join(v.reasons[0] for v in refused.values())
         by_name = {v.name: v for v in (*verdicts, *refused.values())}

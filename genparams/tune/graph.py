@@ -37,6 +37,7 @@ from genparams.tune.reader import (
     ParameterReader,
     python_value,
     read_all,
+    read_named,
     wait_future,
 )
 
@@ -169,6 +170,12 @@ class Graph:
     def read_node(self, node_name: str, timeout: float = 5.0) -> list[dict[str, Any]]:
         """Every parameter of a node: name, type, value and descriptor, as JSON-ready dicts."""
         return self.read_nodes([node_name], timeout)[node_name]
+
+    def read_parameters(
+        self, node_name: str, names: Sequence[str], timeout: float = 5.0
+    ) -> tuple[list[str], list[dict[str, Any]]]:
+        """Every name the node declares, and the parameters ``names`` in full."""
+        return read_named(self.reader(node_name), names, timeout)
 
     def read_nodes(
         self, node_names: Sequence[str], timeout: float = 5.0
