@@ -2,6 +2,7 @@
 
 - the page for a node with 1,000 parameters: from navigation to a usable form;
 - a set made elsewhere (through the services) until the page shows it;
+- the check of an edit (``/api/check``) on that node: first (compiles its schema) and later;
 - audit time against the number of nodes (one process per 10 nodes).
 
 Run with ``python -m bench.tune`` (``make bench`` runs it after the main suite).
@@ -9,11 +10,13 @@ Run with ``python -m bench.tune`` (``make bench`` runs it after the main suite).
 
 from __future__ import annotations
 
+import json
 import os
 import statistics
 import subprocess
 import sys
 import time
+import urllib.request
 from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
@@ -23,7 +26,7 @@ os.environ.setdefault("ROS_AUTOMATIC_DISCOVERY_RANGE", "LOCALHOST")
 from playwright.sync_api import Page, sync_playwright
 
 from genparams.audit.walk import audit
-from genparams.tune.graph import ros_parameter
+from genparams.tune.checking import json_parameter
 from genparams.tune.server import TuneServer
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -63,7 +66,24 @@ def open_page(page: Page, url: str, node: str) -> tuple[float, float]:
     return usable, int(complete.get_attribute("data-complete") or 0) / 1000
 
 
-def page_numbers(node: str) -> tuple[list[tuple[float, float]], list[float]]:
+def check_numbers(url: str, node: str) -> list[float]:
+    """Seconds per ``/api/check`` of one edit; the first compiles the node's schema message."""
+    body = {"node": node, "params": [{"name": "group_0.p_0", "type": "double", "value": 2.5}]}
+    times = []
+    for _ in range(REPEATS + 1):
+        request = urllib.request.Request(
+            url.split("?")[0] + "api/check",
+            data=json.dumps(body).encode(),
+            headers={"content-type": "application/json"},
+        )
+        started = time.perf_counter()
+        with urllib.request.urlopen(request, timeout=30) as response:
+            assert json.loads(response.read())["successful"]
+        times.append(time.perf_counter() - started)
+    return times
+
+
+def page_numbers(node: str) -> tuple[list[tuple[float, float]], list[float], list[float]]:
     server = TuneServer(nodes=(node,))
     url = server.start()
     try:
@@ -82,16 +102,17 @@ def page_numbers(node: str) -> tuple[list[tuple[float, float]], list[float]]:
                 selector = '[data-param="group_0.p_0"]'
                 started = time.perf_counter()
                 server.graph.set_parameters(
-                    node, [ros_parameter("group_0.p_0", "double", value)], atomic=False
+                    node, [json_parameter("group_0.p_0", "double", value)], atomic=False
                 )
                 page.wait_for_function(
                     f"document.querySelector('{selector}').value === '{value:g}'", polling=5
                 )
                 updates.append(time.perf_counter() - started)
             browser.close()
+        checks = check_numbers(url, node)
     finally:
         server.stop()
-    return loads, updates
+    return loads, updates, checks
 
 
 def audit_numbers(counts: tuple[int, ...]) -> list[tuple[int, float]]:
@@ -125,7 +146,10 @@ def _all(chunks: list[list[str]]) -> Iterator[None]:
 
 
 def section(
-    loads: list[tuple[float, float]], updates: list[float], audits: list[tuple[int, float]]
+    loads: list[tuple[float, float]],
+    updates: list[float],
+    checks: list[float],
+    audits: list[tuple[int, float]],
 ) -> str:
     usable = [first for first, _ in loads]
     complete = [last for _, last in loads]
@@ -146,6 +170,10 @@ def section(
         f"{ms(statistics.median(complete))} | {ms(max(complete))} | |",
         f"| set made elsewhere until the page shows it | "
         f"{ms(statistics.median(updates))} | {ms(max(updates))} | < 1 s |",
+        f"| check of one edit on that node, first (compiles its schema message) | "
+        f"{ms(checks[0])} | | |",
+        f"| same check, later (reads the node, runs rclpy's and the schema's checks) | "
+        f"{ms(statistics.median(checks[1:]))} | {ms(max(checks[1:]))} | < 150 ms |",
         "",
         "| nodes audited | audit time | per node |",
         "|---|---|---|",
@@ -170,9 +198,9 @@ def write_section(text: str) -> None:
 def main() -> int:
     node = f"bench_wide_{os.getpid()}"
     with demo_nodes(f"{node}:wide1000"):
-        loads, updates = page_numbers(f"/{node}")
+        loads, updates, checks = page_numbers(f"/{node}")
     audits = audit_numbers((1, 10, 20, 40))
-    text = section(loads, updates, audits)
+    text = section(loads, updates, checks, audits)
     write_section(text)
     print(text)
     return 0

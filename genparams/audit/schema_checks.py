@@ -12,33 +12,10 @@ from typing import Any
 
 from genparams.audit.findings import DRIFT_DEFAULT, NOT_CHECKED, VIOLATION, Finding
 from genparams.runtime.naming import strip_prefix
+from genparams.runtime.published_spec import param_from_json
 from genparams.runtime.rules import RuleError, compile_rule
-from genparams.runtime.spec import CompiledParam, ParamSpec, compile_param
-from genparams.runtime.types import TYPES
+from genparams.runtime.spec import CompiledParam, compile_param
 from genparams.runtime.validators import Custom
-
-
-def frozen(value: Any) -> Any:
-    """JSON lists as the tuples a ParamSpec holds (dicts, such as length's, stay)."""
-    if isinstance(value, list):
-        return tuple(frozen(item) for item in value)
-    return value
-
-
-def param_from_json(described: Mapping[str, Any], name: str) -> ParamSpec:
-    kind = TYPES[described["type"]]
-    default = None if described["required"] else kind.coerce_default(described["default"])
-    span = described.get("range")
-    return ParamSpec(
-        name=name,
-        type=described["type"],
-        default=default,
-        required=described["required"],
-        read_only=described["read_only"],
-        range=None if span is None else (span["min"], span["max"], span["step"]),
-        choices=None if described["choices"] is None else frozen(described["choices"]),
-        validators=tuple((rule, frozen(arg)) for rule, arg in described["validators"]),
-    )
 
 
 def importable(check: Any) -> bool:

@@ -12,7 +12,7 @@ import collections
 import functools
 import threading
 import traceback
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import Any, Generic, TypeVar
 
 from rclpy.node import Node
@@ -149,25 +149,7 @@ class Binding(Generic[P]):
         self, parameters: Sequence[Parameter], declaring: bool
     ) -> dict[CompiledParam, Any] | list[str]:
         """This class's part of a request, typed, or the reasons it is refused."""
-        reasons = []
-        typed: dict[CompiledParam, Any] = {}
-        owned = self.owned
-        for parameter in parameters:
-            param = owned.get(parameter.name)
-            if param is None:
-                continue
-            if parameter.type_ == Parameter.Type.NOT_SET:
-                reasons.append(f"{parameter.name}: cannot be undeclared")
-                continue
-            try:
-                value = param.type.from_ros(parameter.value)
-            except ValueError as exc:
-                reasons.append(f"{parameter.name}: {exc}")
-                continue
-            reason = param.check(value)
-            if reason is not None:
-                reasons.append(f"{parameter.name}: {reason}")
-            typed[param] = value
+        typed, reasons = check_each(self.owned, parameters)
         if self.mapped is not None and not reasons:
             reasons.extend(self.mapped.check(parameters, typed, declaring))
         if reasons:
@@ -277,6 +259,32 @@ class Binding(Generic[P]):
                     self.subscribers.remove(callback)
 
         return unsubscribe
+
+
+def check_each(
+    owned: Mapping[str, CompiledParam], parameters: Sequence[Parameter]
+) -> tuple[dict[CompiledParam, Any], list[str]]:
+    """The values of ``owned`` parameters (by full ROS name) in a request, typed, and a
+    reason per value refused: its type, then its own rules. Other names are skipped."""
+    reasons = []
+    typed: dict[CompiledParam, Any] = {}
+    for parameter in parameters:
+        param = owned.get(parameter.name)
+        if param is None:
+            continue
+        if parameter.type_ == Parameter.Type.NOT_SET:
+            reasons.append(f"{parameter.name}: cannot be undeclared")
+            continue
+        try:
+            value = param.type.from_ros(parameter.value)
+        except ValueError as exc:
+            reasons.append(f"{parameter.name}: {exc}")
+            continue
+        reason = param.check(value)
+        if reason is not None:
+            reasons.append(f"{parameter.name}: {reason}")
+        typed[param] = value
+    return typed, reasons
 
 
 def _names_clash(problem: str, clashes: list[str]) -> bool:

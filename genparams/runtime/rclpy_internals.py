@@ -21,15 +21,23 @@ Behaviours relied on (rclpy 7.1, ``rclpy/node.py``):
 - ``Node.undeclare_parameter`` deletes from ``_parameters`` and ``_descriptors``
   without calling any callback.
 - ``Node._parameter_overrides``: the values a node was started with.
+- ``Node._check_undeclared_parameters(parameter_list)`` refuses a set naming
+  undeclared parameters; it reads ``_parameters`` and
+  ``_allow_undeclared_parameters`` only (its message leaves out the first name).
+- ``Node._apply_descriptor(parameter, descriptor, check_read_only)`` is rclpy's
+  check of a value against a descriptor (read-only, type, range and step), the
+  first check of every set; given a descriptor it reads nothing of the node.
 - ``rclpy.lifecycle.Node._state_machine.current_state`` is ``(id, label)``.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Collection, Mapping, Sequence
+from types import SimpleNamespace
 from typing import Any
 
 from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
+from rclpy.exceptions import ParameterNotDeclaredException
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
@@ -89,6 +97,31 @@ def set_with_descriptors(
 ) -> SetParametersResult:
     """One atomic change that may declare (new descriptors) and undeclare (NOT_SET) together."""
     return set_path(node)(list(parameters), dict(descriptors))
+
+
+def descriptor_check(
+    node: Node, parameter: Parameter, descriptor: ParameterDescriptor
+) -> SetParametersResult:
+    """rclpy's own verdict on setting ``parameter`` under ``descriptor``, without setting it.
+
+    The tuning page checks a value as the node would; any rclpy node runs the
+    check, since with a descriptor given it reads nothing of its own state.
+    """
+    result: SetParametersResult = node._apply_descriptor(parameter, descriptor, True)
+    return result
+
+
+def undeclared_check(parameters: Sequence[Parameter], declared: Collection[str]) -> str | None:
+    """rclpy's refusal, in its own words, of a set naming parameters not in ``declared``
+    (on a node that allows no undeclared parameters), or None."""
+    holder = SimpleNamespace(
+        _parameters=dict.fromkeys(declared), _allow_undeclared_parameters=False
+    )
+    try:
+        Node._check_undeclared_parameters(holder, list(parameters))  # type: ignore[arg-type]
+    except ParameterNotDeclaredException as exc:
+        return str(exc)
+    return None
 
 
 def parameter_overrides(node: Node) -> dict[str, Parameter]:

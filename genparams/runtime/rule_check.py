@@ -2,9 +2,10 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from typing import TYPE_CHECKING, Any
 
+from genparams.runtime.rules import CompiledRule
 from genparams.runtime.spec import CompiledParam, compile_schema
 from genparams.runtime.tree import get_path
 
@@ -49,7 +50,13 @@ def broken_rules(
     rules = compiled.rules_reading(proposed)
     if not rules:
         return []
-    values = MergedValues(committed, proposed, compiled.parameters)
+    return violations(rules, MergedValues(committed, proposed, compiled.parameters), shown)
+
+
+def violations(
+    rules: Iterable[CompiledRule], values: Mapping[str, Any], shown: Callable[[str], str]
+) -> list[str]:
+    """A reason per rule that ``values`` (relative ROS names, typed) break."""
     reasons = []
     for rule in rules:
         reason = rule.violation(values, shown)

@@ -241,6 +241,11 @@ def compile_schema(spec: SchemaSpec) -> CompiledSchema:
     return compiled
 
 
+def compile_uncached(spec: SchemaSpec) -> CompiledSchema:
+    """Compile a spec built at run time (a schema read from a node's message), uncached."""
+    return _compile(spec)
+
+
 def in_place_maps(spec: SchemaSpec) -> frozenset[str]:
     """Maps whose entries sit beside other names of their namespace (schema key ``"*"``).
 

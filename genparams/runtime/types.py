@@ -50,6 +50,15 @@ class ParamType:
         """
         return self._convert(value, lenient_double=True)
 
+    def from_json(self, value: Any) -> Any:
+        """Check a JSON value (a tuning page's edit) and return it in typed-view form.
+
+        Refused, never converted: a bool for an int, a string for a number, a
+        fraction for an int. JSON has one number type, so a double may be
+        written without a fraction (``2`` for ``2.0``), as in a schema default.
+        """
+        return self._convert(value, lenient_double=True)
+
     def from_ros(self, value: Any) -> Any:
         """Convert a ROS parameter value to typed-view form, exactly as ROS types it."""
         # An empty list carries no element type (rclpy calls it BYTE_ARRAY), and rcl's

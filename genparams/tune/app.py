@@ -22,7 +22,8 @@ from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 
 from genparams import __version__
-from genparams.tune.graph import Graph, ros_parameter
+from genparams.tune.checking import Checker, json_parameter
+from genparams.tune.graph import Graph
 from genparams.tune.params_dump import params_file_text
 
 STATIC = Path(__file__).resolve().parent / "static"
@@ -39,8 +40,10 @@ class TuneApp:
         token: str | None = None,
         read_only: bool = False,
         nodes: tuple[str, ...] = (),
+        trusted_validators: tuple[str, ...] = (),
     ) -> None:
         self.graph = graph
+        self.checker = Checker(graph.node, trusted_validators)
         self.token = token
         self.read_only = read_only
         self.only_nodes = nodes
@@ -53,6 +56,7 @@ class TuneApp:
                 Route("/api/nodes", self.nodes),
                 Route("/api/node", self.node),
                 Route("/api/set", self.set, methods=["POST"]),
+                Route("/api/check", self.check, methods=["POST"]),
                 Route("/api/params-file", self.params_file),
                 Route("/api/events", self.events),
                 Mount("/static", StaticFiles(directory=STATIC), name="static"),
@@ -105,7 +109,7 @@ class TuneApp:
         try:
             body = await request.json()
             node = str(body["node"])
-            parameters = [ros_parameter(p["name"], p["type"], p["value"]) for p in body["params"]]
+            parameters = [json_parameter(p["name"], p["type"], p["value"]) for p in body["params"]]
             atomic = bool(body.get("atomic", False))
         except (ValueError, KeyError, TypeError) as exc:
             return JSONResponse({"error": f"bad request: {exc}"}, status_code=400)
@@ -114,6 +118,28 @@ class TuneApp:
         except TimeoutError as exc:
             return JSONResponse({"error": str(exc)}, status_code=504)
         return JSONResponse({"results": results})
+
+    async def check(self, request: Request) -> Response:
+        """What the node would answer to an atomic set of ``params``, without setting them."""
+        if (denied := self.denied(request)) is not None:
+            return denied
+        try:
+            body = await request.json()
+            node = str(body["node"])
+            edits = [(str(p["name"]), p["type"], p["value"]) for p in body["params"]]
+        except (ValueError, KeyError, TypeError) as exc:
+            return JSONResponse({"error": f"bad request: {exc}"}, status_code=400)
+
+        def answer() -> dict[str, Any]:
+            message = self.graph.schema(node)
+            wanted = self.checker.wanted(node, message, edits)
+            declared, current = self.graph.read_parameters(node, wanted)
+            return self.checker.check(node, message, current, edits, declared)
+
+        try:
+            return JSONResponse(await run_in_threadpool(answer))
+        except TimeoutError as exc:
+            return JSONResponse({"error": str(exc)}, status_code=504)
 
     async def params_file(self, request: Request) -> Response:
         if (denied := self.denied(request)) is not None:

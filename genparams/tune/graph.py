@@ -34,10 +34,10 @@ from std_msgs.msg import String
 
 from genparams.runtime.schema_topic import SCHEMA_TOPIC_SUFFIX
 from genparams.tune.reader import (
-    TYPE_NAMES,
     ParameterReader,
     python_value,
     read_all,
+    read_named,
     wait_future,
 )
 
@@ -47,20 +47,7 @@ SCHEMA_QOS = QoSProfile(
     reliability=ReliabilityPolicy.RELIABLE,
     durability=DurabilityPolicy.TRANSIENT_LOCAL,
 )
-ROS_TYPES = {name: ros_type for ros_type, name in TYPE_NAMES.items()}
 EventListener = Callable[[dict[str, Any]], None]
-
-
-def ros_parameter(name: str, type_name: str, value: Any) -> Parameter:
-    """A JSON value as an rclpy Parameter of the given schema type (never inferred)."""
-    ros_type = Parameter.Type(ROS_TYPES[type_name])
-    if type_name == "byte_array":
-        value = [bytes((int(b),)) for b in value]
-    elif type_name == "double":
-        value = float(value)
-    elif type_name == "double_array":
-        value = [float(v) for v in value]
-    return Parameter(name, ros_type, value)
 
 
 class Graph:
@@ -183,6 +170,12 @@ class Graph:
     def read_node(self, node_name: str, timeout: float = 5.0) -> list[dict[str, Any]]:
         """Every parameter of a node: name, type, value and descriptor, as JSON-ready dicts."""
         return self.read_nodes([node_name], timeout)[node_name]
+
+    def read_parameters(
+        self, node_name: str, names: Sequence[str], timeout: float = 5.0
+    ) -> tuple[list[str], list[dict[str, Any]]]:
+        """Every name the node declares, and the parameters ``names`` in full."""
+        return read_named(self.reader(node_name), names, timeout)
 
     def read_nodes(
         self, node_names: Sequence[str], timeout: float = 5.0

@@ -112,6 +112,22 @@ def read_all(readers: Sequence[ParameterReader], timeout: float) -> dict[str, li
     }
 
 
+def read_named(
+    reader: ParameterReader, names: Sequence[str], timeout: float
+) -> tuple[list[str], list[dict[str, Any]]]:
+    """Every name the node declares, and those of ``names`` it declares, read in full."""
+    if not reader.wait_ready(timeout):
+        raise TimeoutError(f"{reader.target}: parameter services did not appear")
+    listing = reader.lister.call_async(ListParameters.Request(depth=0))
+    declared = list(wait_future(listing, timeout).result.names)
+    known = set(declared)
+    wanted = [name for name in dict.fromkeys(names) if name in known]
+    got = reader.getter.call_async(GetParameters.Request(names=wanted))
+    described = reader.describer.call_async(DescribeParameters.Request(names=wanted))
+    values = wait_future(got, timeout).values
+    return declared, parameters_of(wanted, values, wait_future(described, timeout).descriptors)
+
+
 def parameters_of(
     names: Sequence[str], values: Sequence[Any], descriptors: Sequence[Any]
 ) -> list[dict[str, Any]]:

@@ -34,6 +34,7 @@ class TuneServer:
         read_only: bool = False,
         token: str | None = None,
         graph: Graph | None = None,
+        trusted_validators: tuple[str, ...] = (),
     ) -> None:
         if token is None and not is_loopback(host):
             token = secrets.token_urlsafe(24)
@@ -41,7 +42,13 @@ class TuneServer:
         self.token = token
         self.owns_graph = graph is None
         self.graph = graph if graph is not None else Graph()
-        app = TuneApp(self.graph, token=token, read_only=read_only, nodes=nodes)
+        app = TuneApp(
+            self.graph,
+            token=token,
+            read_only=read_only,
+            nodes=nodes,
+            trusted_validators=trusted_validators,
+        )
         config = uvicorn.Config(
             app.starlette(),
             host=host,

@@ -9,7 +9,8 @@ from __future__ import annotations
 import importlib.metadata
 import inspect
 
-from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
+from rcl_interfaces.msg import IntegerRange, ParameterDescriptor, SetParametersResult
+from rclpy.exceptions import ParameterNotDeclaredException
 from rclpy.lifecycle import Node as LifecycleNode
 from rclpy.node import Node
 from rclpy.parameter import Parameter
@@ -135,3 +136,37 @@ def test_overrides_and_lifecycle_state(ros: RosHarness) -> None:
     assert internals.lifecycle_state(managed) == "inactive"
     managed.trigger_activate()
     assert internals.lifecycle_state(managed) == "active"
+
+
+def test_descriptor_check_is_the_verdict_of_a_set_and_stores_nothing(ros: RosHarness) -> None:
+    node = ros.node()
+    other = ros.node()  # any node runs the check: it reads nothing of its own
+    descriptor = ParameterDescriptor(
+        integer_range=[IntegerRange(from_value=0, to_value=10, step=2)]
+    )
+    node.declare_parameter("n", 4, descriptor)
+    for value in (3, 12, 6):
+        declared = node.describe_parameter("n")
+        verdict = internals.descriptor_check(other, Parameter("n", value=value), declared)
+        assert not other.has_parameter("n")
+        (result,) = node.set_parameters([Parameter("n", value=value)])
+        assert (verdict.successful, verdict.reason) == (result.successful, result.reason)
+    wrong = internals.descriptor_check(other, Parameter("n", value=1.5), declared)
+    assert not wrong.successful
+    assert wrong.reason.startswith("Wrong parameter type")
+    frozen = ParameterDescriptor(read_only=True, type=Parameter.Type.INTEGER.value)
+    assert not internals.descriptor_check(other, Parameter("n", value=1), frozen).successful
+
+
+def test_undeclared_check_is_the_refusal_of_a_set(ros: RosHarness) -> None:
+    node = ros.node()
+    node.declare_parameter("a", 1)
+    for names in (["y"], ["a", "y", "z"], ["a"]):
+        parameters = [Parameter(name, value=1) for name in names]
+        verdict = internals.undeclared_check(parameters, ["a"])
+        try:
+            node.set_parameters_atomically(parameters)
+        except ParameterNotDeclaredException as exc:
+            assert verdict == str(exc)
+        else:
+            assert verdict is None

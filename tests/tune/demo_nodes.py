@@ -1,7 +1,7 @@
 """Real nodes for the tuning and audit tests, in a process of their own.
 
 ``python -m tests.tune.demo_nodes NAME:KIND ...`` starts one node per argument
-(KIND: camera, arm, motion, plain, loose, or wideN with N parameters) and prints
+(KIND: camera, arm, motion, plain, loose, edges, checks, or wideN with N parameters) and prints
 "ready" once every node is declared. ROS arguments for every node follow ``--``.
 """
 
@@ -17,6 +17,7 @@ from rclpy.executors import MultiThreadedExecutor
 from rclpy.node import Node
 
 import genparams
+from tests.edge_values import SCHEMA as EDGES_SCHEMA
 from tests.support import ROOT, import_file
 
 SCHEMAS = {
@@ -39,9 +40,46 @@ def wide_schema(count: int) -> str:
     return "\n".join(lines) + "\n"
 
 
-def params_class(kind: str, workdir: Path) -> type:
+# What the page's checks are tested on: a pattern, double edges and a step, a rule, a custom
+# validator the tuning machine can import and one only the node can.
+CHECKS_SCHEMA = r"""genparams: 1
+name: checks
+parameters:
+  label: {type: string, default: abc, validators: [{pattern: '^\w+$'}]}
+  share: {type: double, default: 0.5, range: {min: 0.0, max: 1.0}}
+  fine: {type: double, default: 0.2, range: {min: 0.0, max: 1.0, step: 0.1}}
+  even: {type: int, default: 2, validators: [{custom: 'tests.custom_checks:is_even'}]}
+  short: {type: string, default: ab, validators: [{custom: 'node_only_checks:is_short'}]}
+  low: {type: int, default: 1}
+  high: {type: int, default: 5}
+rules:
+  - {name: low_below_high, check: 'low < high', description: Low stays below high.}
+"""
+
+NODE_ONLY_CHECKS = """def is_short(value):
+    return None if len(value) <= 3 else f"{value!r} is longer than 3"
+"""
+
+
+def schema_text(kind: str, workdir: Path) -> tuple[Path, str] | None:
+    """The schema of a kind written in code, or None for an example's file."""
     if kind.startswith("wide"):
-        text = genparams.generate(workdir / "wide.yaml", wide_schema(int(kind[4:] or 1000)))
+        return workdir / "wide.yaml", wide_schema(int(kind[4:] or 1000))
+    if kind == "edges":
+        return workdir / "edges.yaml", EDGES_SCHEMA
+    if kind == "checks":
+        # A module of the node's own: the tuning machine cannot import it.
+        (workdir / "node_only_checks.py").write_text(NODE_ONLY_CHECKS, encoding="utf-8")
+        if str(workdir) not in sys.path:
+            sys.path.insert(0, str(workdir))
+        return workdir / "checks.yaml", CHECKS_SCHEMA
+    return None
+
+
+def params_class(kind: str, workdir: Path) -> type:
+    written = schema_text(kind, workdir)
+    if written is not None:
+        text = genparams.generate(*written)
     else:
         text = genparams.generate(SCHEMAS[kind])
     path = workdir / f"{kind}_params.py"

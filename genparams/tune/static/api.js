@@ -26,6 +26,13 @@ export const api = {
       headers: { "content-type": "application/json" },
       body: JSON.stringify({ node, params, atomic }),
     }),
+  // What the node would answer to setting `params` together, without setting them.
+  check: (node, params) =>
+    call("/api/check", {
+      method: "POST",
+      headers: { "content-type": "application/json" },
+      body: JSON.stringify({ node, params }),
+    }),
   paramsFileUrl: (name) => withToken(`/api/params-file?node=${encodeURIComponent(name)}`),
   events: () => new EventSource(withToken("/api/events")),
 };

@@ -1,9 +1,12 @@
 // The tuning page: node list, a node's form, edits applied through its parameter services.
 import { api } from "./api.js";
-import { problem } from "./checks.js";
-import { diffTable, el, mapGroup, row, section } from "./form.js";
+import { InputError, diffTable, el, mapGroup, row, section } from "./form.js";
 
-const page = { readOnly: false, node: null, view: null, pending: new Map(), reload: null };
+// pending: edits not applied yet; drafts: values being typed (checked, not applied);
+// applying: the edits of the apply in flight and the names the node changed meanwhile.
+const page = { readOnly: false, node: null, view: null, pending: new Map(), drafts: new Map(),
+  applying: null, reload: null, checkTimer: null, checks: 0 };
+const CHECK_DELAY_MS = 150;
 
 function status(text) { document.getElementById("status").textContent = text; }
 const liveMode = () => document.getElementById("live").checked;
@@ -57,31 +60,91 @@ function renderDiff() {
   page.view.diff.replaceChildren(diffTable(rows));
 }
 
-async function applyEdits(edits, atomic) {
-  const { byName } = page.view.known;
-  const params = [];
-  let blocked = false;
-  for (const [name, value] of edits) {
-    const meta = byName.get(name);
-    const bad = problem(meta, value);
-    showError(name, bad ? `${name}: ${bad} (checked in the page, not sent)` : "");
-    blocked ||= Boolean(bad);
-    params.push({ name, type: meta.type, value });
+function showNote(name, attribute, text) {
+  const box = page.view?.form.querySelector(`[${attribute}="${CSS.escape(name)}"]`);
+  if (box) box.textContent = text || "";
+}
+
+// The server's answer, row by row: the node's reason, and the checks only the node can run.
+function showVerdicts(check) {
+  for (const result of check.results) {
+    markRow(result.name, result.successful ? "ok" : "refused");
+    showError(result.name, result.successful ? "" : result.reason);
+    showNote(result.name, "data-param-note", result.not_checked.join(" · "));
   }
-  if (blocked || !params.length) return false;
+}
+
+// Each row says where its value stands: checking, ok or refused (data-verdict).
+function markRow(name, verdict) {
+  const row = page.view?.form.querySelector(`[data-row="${CSS.escape(name)}"]`);
+  if (row) row.dataset.verdict = verdict;
+}
+
+// Edits as the API takes them; a value the page could not type is shown and not sent.
+function typedEdits(edits) {
+  const params = [];
+  let typed = true;
+  for (const [name, value] of edits) {
+    if (value instanceof InputError) {
+      showError(name, `${name}: ${value.message}`);
+      markRow(name, "refused");
+      typed = false;
+      continue;
+    }
+    params.push({ name, type: page.view.known.byName.get(name).type, value });
+  }
+  return typed ? params : null;
+}
+
+async function applyEdits(edits, atomic) {
+  const params = typedEdits(edits);
+  if (!params || !params.length) return false;
   const node = page.node;
+  const check = await api.check(node, params).catch(() => null);  // unreachable: the node decides
+  if (node !== page.node) return false;
+  if (check) {
+    showVerdicts(check);
+    if (!check.successful) { status("the node would refuse this change: not sent"); return false; }
+  }
   const { results } = await api.set(node, params, atomic);
   if (node !== page.node) return false;
   let ok = true;
   for (const result of results) {
     showError(result.name, result.successful ? "" : result.reason || "rejected by the node");
+    markRow(result.name, result.successful ? "ok" : "refused");
     ok &&= result.successful;
   }
   status(ok ? `applied ${params.length} change(s)` : "the node rejected the change");
   return ok;
 }
 
+// Check the edits not applied yet, with what is being typed, a moment after the last key.
+function scheduleCheck() {
+  clearTimeout(page.checkTimer);
+  page.checkTimer = setTimeout(checkEdits, CHECK_DELAY_MS);
+}
+
+async function checkEdits() {
+  if (!page.view) return;
+  const edits = new Map([...page.pending, ...page.drafts]);
+  page.drafts.clear();
+  const params = typedEdits(edits);
+  if (!params || !params.length) return;
+  const node = page.node;
+  const asked = ++page.checks;  // an answer to an older question is not shown
+  const check = await api.check(node, params).catch(() => null);
+  if (check && node === page.node && asked === page.checks) showVerdicts(check);
+}
+
+function onDraft(name, value) {
+  page.drafts.set(name, value);
+  markRow(name, "checking");
+  scheduleCheck();
+}
+
 function onEdit(name, value) {
+  page.drafts.delete(name);
+  markRow(name, "checking");
   if (liveMode()) {
     applyEdits([[name, value]], false).then((ok) => {
       if (!ok && !page.pending.has(name)) page.pending.set(name, value);
@@ -91,6 +154,7 @@ function onEdit(name, value) {
   }
   page.pending.set(name, value);
   updateApplyButton();
+  scheduleCheck();
 }
 
 function updateApplyButton() {
@@ -99,9 +163,27 @@ function updateApplyButton() {
   page.view.apply.disabled = page.readOnly || page.pending.size === 0;
 }
 
+// An apply sends the pending edits; the node may change any of them meanwhile (another
+// tab, another tool). Once applied, each row shows the last value the node announced, so
+// the form never keeps a value the node no longer holds.
 async function applyPending() {
-  const ok = await applyEdits([...page.pending], true);
-  if (ok) { page.pending.clear(); updateApplyButton(); }
+  const sent = new Map(page.pending);
+  const applying = { changed: new Set() };
+  page.applying = applying;
+  let ok = false;
+  try {
+    ok = await applyEdits([...sent], true);
+  } finally {
+    if (page.applying === applying) page.applying = null;
+  }
+  if (!ok || !page.view) return;
+  for (const [name, value] of sent) {
+    if (JSON.stringify(page.pending.get(name)) !== JSON.stringify(value)) continue;  // edited again
+    page.pending.delete(name);
+    showNote(name, "data-param-node", "");
+    if (applying.changed.has(name)) setControl(name, page.view.known.values.get(name));
+  }
+  updateApplyButton();
 }
 
 function onReset(name) {
@@ -117,7 +199,8 @@ function setKeys(group, keys) {
 function renderNode(data) {
   page.pending.clear();
   const known = metas(data.schema, data.parameters);
-  const handlers = { readOnly: page.readOnly, onEdit, onReset };
+  page.drafts.clear();
+  const handlers = { readOnly: page.readOnly, onEdit, onDraft, onReset };
   const rowFor = (name) => {
     const meta = known.byName.get(name);
     const label = meta.key !== undefined ? meta.name : name.slice(namespaceOf(name).length + (namespaceOf(name) ? 1 : 0));
@@ -207,7 +290,9 @@ function onEvent(event) {
   }
   for (const [name, value] of Object.entries(event.changed || {})) {
     page.view.known.values.set(name, value);
+    page.applying?.changed.add(name);
     if (!page.pending.has(name)) { setControl(name, value); showError(name, ""); }
+    else showNote(name, "data-param-node", `the node now holds ${JSON.stringify(value)}`);
   }
   renderDiff();
 }

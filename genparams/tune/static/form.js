@@ -1,5 +1,20 @@
 // A node's form: one section per namespace, one row per parameter, a fieldset per mapped group.
-import { elementType, isArrayType } from "./checks.js";
+// The page only types what the user enters as JSON; every rule is checked by the server
+// (the node's own checks, /api/check) and by the node.
+
+export function isArrayType(type) {
+  return type.endsWith("_array");
+}
+
+export function elementType(type) {
+  return { byte_array: "byte", bool_array: "bool", int_array: "int",
+    double_array: "double", string_array: "string" }[type] || type;
+}
+
+// Text that is not a JSON number: the row says so and nothing is sent.
+export class InputError {
+  constructor(message) { this.message = message; }
+}
 
 function el(tag, attrs = {}, ...children) {
   const node = document.createElement(tag);
@@ -14,9 +29,15 @@ function el(tag, attrs = {}, ...children) {
   return node;
 }
 
+// The number the user typed, as typed: 2.5 stays 2.5 for an integer (the server refuses it).
 function numberOf(kind, text) {
-  if (text.trim() === "") return NaN;
-  return kind === "int" || kind === "byte" ? Number.parseInt(text, 10) : Number.parseFloat(text);
+  const trimmed = String(text).trim();
+  if (trimmed === "") return new InputError("enter a number");
+  const value = Number(trimmed);
+  if (!Number.isFinite(value)) return new InputError(`${JSON.stringify(trimmed)} is not a finite number`);
+  // An integer past 2^53 keeps its digits: JSON.rawJSON writes them as typed.
+  if (/^-?\d+$/.test(trimmed) && !Number.isSafeInteger(value) && JSON.rawJSON) return JSON.rawJSON(trimmed);
+  return value;
 }
 
 function scalarInput(kind, value, attrs) {
@@ -37,7 +58,11 @@ function arrayEditor(meta, name, value, disabled, onEdit) {
   const kind = elementType(meta.type);
   const box = el("div", { class: "array", "data-param": name, "data-type": meta.type });
   const items = el("div", { class: "items" });
-  const read = () => [...items.querySelectorAll("input")].map((input) => scalarValue(kind, input));
+  const read = () => {
+    const values = [...items.querySelectorAll("input")].map((input) => scalarValue(kind, input));
+    const bad = values.findIndex((v) => v instanceof InputError);
+    return bad < 0 ? values : new InputError(`item ${bad}: ${values[bad].message}`);
+  };
   const addItem = (item) => {
     const input = scalarInput(kind, item, { disabled });
     input.addEventListener("change", () => onEdit(name, read()));
@@ -54,7 +79,7 @@ function arrayEditor(meta, name, value, disabled, onEdit) {
   return box;
 }
 
-function control(meta, name, value, disabled, onEdit) {
+function control(meta, name, value, disabled, onEdit, onDraft) {
   const kind = meta.type;
   if (isArrayType(kind)) return arrayEditor(meta, name, value, disabled, onEdit);
   const id = `p-${name}`;
@@ -79,6 +104,7 @@ function control(meta, name, value, disabled, onEdit) {
       slider.value = number.value;
       onEdit(name, numberOf(kind, number.value));
     });
+    number.addEventListener("input", () => onDraft(name, numberOf(kind, number.value)));
     const pair = el("span", { class: "slider" }, slider, number);
     slider.genparamsSet = (next) => { slider.value = next; number.value = next; };
     pair.genparamsControl = slider;
@@ -86,6 +112,7 @@ function control(meta, name, value, disabled, onEdit) {
   }
   const input = scalarInput(kind, value, { id, disabled, "data-param": name });
   input.addEventListener("change", () => onEdit(name, scalarValue(kind, input)));
+  if (kind !== "bool") input.addEventListener("input", () => onDraft(name, scalarValue(kind, input)));
   input.genparamsSet = (next) => {
     if (kind === "bool") input.checked = Boolean(next); else input.value = next;
   };
@@ -98,9 +125,9 @@ function help(meta) {
   return words.join(" · ");
 }
 
-export function row(meta, name, label, value, { readOnly, onEdit, onReset, hasDefault }) {
+export function row(meta, name, label, value, { readOnly, onEdit, onDraft, onReset, hasDefault }) {
   const disabled = readOnly || meta.read_only;
-  const widget = control(meta, name, value, disabled, onEdit);
+  const widget = control(meta, name, value, disabled, onEdit, onDraft);
   const reset = hasDefault
     ? el("button", { type: "button", class: "reset small", text: "↺", title: "reset to default",
         "data-reset": name, disabled })
@@ -113,6 +140,8 @@ export function row(meta, name, label, value, { readOnly, onEdit, onReset, hasDe
     el("span", { class: "unit", text: meta.unit || "" }),
     reset,
     el("div", { class: "error", "data-param-error": name, role: "alert" }),
+    el("div", { class: "note", "data-param-note": name }),
+    el("div", { class: "note", "data-param-node": name }),
     el("div", { class: "help", text: help(meta) }));
 }
 
