@@ -3,12 +3,9 @@
 from __future__ import annotations
 
 import textwrap
-from typing import Any
-
-import yaml
 
 from genparams.gpl.convert import CustomUse, Imported
-from genparams.runtime.validator_kinds import KINDS
+from genparams.outputs.schema_yaml import schema_yaml
 
 # Python bodies for custom validators that ros2_controllers uses, whose meaning
 # their names and control_toolbox's documentation state: the import can write
@@ -31,47 +28,12 @@ KNOWN_BODIES = {
 }
 
 
-class _Dumper(yaml.SafeDumper):
-    """Block mappings (one key a line, as people write schemas), flow lists."""
-
-
-def _list(dumper: yaml.SafeDumper, value: list[Any]) -> yaml.Node:
-    """``[a, b]`` for values; one item a line for validators (lists holding mappings)."""
-    flow = not any(isinstance(item, (dict, list)) for item in value)
-    return dumper.represent_sequence("tag:yaml.org,2002:seq", value, flow_style=flow)
-
-
-def _text(dumper: yaml.SafeDumper, value: str) -> yaml.Node:
-    """Descriptions of several lines stay readable as literal blocks."""
-    style = "|" if "\n" in value.strip("\n") else None
-    return dumper.represent_scalar("tag:yaml.org,2002:str", value, style=style)
-
-
-def _mapping(dumper: yaml.SafeDumper, value: dict[str, Any]) -> yaml.Node:
-    """A validator entry (``{length: {min: 1}}``) on one line; everything else one key a line."""
-    flow = len(value) == 1 and next(iter(value)) in KINDS
-    return dumper.represent_mapping("tag:yaml.org,2002:map", value, flow_style=flow)
-
-
-_Dumper.add_representer(list, _list)
-_Dumper.add_representer(dict, _mapping)
-_Dumper.add_representer(str, _text)
-
-
 def schema_text(imported: Imported, source: str) -> str:
     header = (
         f"# genparams schema imported from the generate_parameter_library file {source}\n"
         "# by `genparams import-gpl`. Edit freely: this file is now the source.\n"
     )
-    body = yaml.dump(
-        imported.data,
-        Dumper=_Dumper,
-        sort_keys=False,
-        allow_unicode=True,
-        width=100,
-        default_flow_style=False,
-    )
-    return header + body
+    return header + schema_yaml(imported.data)
 
 
 def stub_text(imported: Imported, module: str) -> str:
