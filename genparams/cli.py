@@ -17,6 +17,7 @@ from genparams.commands import (
     explain,
     generate,
     import_gpl,
+    import_rclpy,
     json_schema,
     tune,
     validate,
@@ -34,6 +35,7 @@ COMMANDS = (
     tune,
     audit,
     import_gpl,
+    import_rclpy,
     cmake_dir,
 )
 
