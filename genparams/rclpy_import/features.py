@@ -27,6 +27,9 @@ def awaiting_feature(found: Found | NodeOption) -> str | None:
         return "declared by name only (rclpy types it dynamically): needs dynamic typing"
     if isinstance(found.value.value, TypeMarker) and found.value.problem is None:
         return "type-only declaration without a value: needs an optional parameter"
+    typed = descriptor is not None and isinstance(descriptor.fields.get("type"), TypeMarker)
+    if typed and found.value.value is None and found.value.problem is None:
+        return "a type in the descriptor without a value: needs an optional parameter"
     if found.runtime_loop is not None and found.name_is_item:
         return (
             f"one parameter per item of {found.runtime_loop}, named by the item: "

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import ast
 from collections.abc import Iterator
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from genparams.rclpy_import.values import (
@@ -93,17 +93,27 @@ def declares(node: ast.AST) -> bool:
     )
 
 
+def opens(node: ast.AST) -> bool:
+    """Whether ``node`` lets params files name parameters (see OPEN_OPTIONS, BY_PREFIX)."""
+    return any(
+        (isinstance(n, ast.keyword) and n.arg in OPEN_OPTIONS)
+        or (isinstance(n, ast.Attribute) and n.attr == BY_PREFIX)
+        for n in ast.walk(node)
+    )
+
+
 def units(module: ast.Module) -> list[Unit]:
     """Every class that declares parameters, then the module's functions if they do."""
     out = []
     constants = _constants(module.body)
+    functions = _functions(module.body, "")
     for statement in module.body:
-        if isinstance(statement, ast.ClassDef) and declares(statement):
-            out.append(_scan_class(statement, constants))
+        if isinstance(statement, ast.ClassDef) and (declares(statement) or opens(statement)):
+            out.append(_scan_class(statement, constants, functions))
     own = [s for s in module.body if not isinstance(s, ast.ClassDef)]
     if any(declares(s) for s in own):
         unit = Unit("", module, ast.get_docstring(module))
-        scanner = _Scanner(unit, Scope(module_constants=constants))
+        scanner = _Scanner(unit, Scope(module_constants=constants, functions=functions))
         for statement in own:
             if isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef)):
                 scanner.function(statement)
@@ -112,18 +122,27 @@ def units(module: ast.Module) -> list[Unit]:
     return out
 
 
-def _scan_class(cls: ast.ClassDef, module_constants: dict[str, ast.expr]) -> Unit:
+def _scan_class(
+    cls: ast.ClassDef,
+    module_constants: dict[str, ast.expr],
+    module_functions: dict[str, ast.FunctionDef],
+) -> Unit:
     unit = Unit(cls.name, cls, ast.get_docstring(cls))
     scope = Scope(
         class_name=cls.name,
         class_constants=_constants(cls.body),
         module_constants=module_constants,
+        functions={**module_functions, **_functions(cls.body, "self.")},
     )
     scanner = _Scanner(unit, scope)
     for statement in cls.body:
         if isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef)):
             scanner.function(statement)
     return unit
+
+
+def _functions(body: list[ast.stmt], prefix: str) -> dict[str, ast.FunctionDef]:
+    return {f"{prefix}{s.name}": s for s in body if isinstance(s, ast.FunctionDef)}
 
 
 def _constants(body: list[ast.stmt]) -> dict[str, ast.expr]:
@@ -160,12 +179,12 @@ class _Scanner:
         self.scope = scope
 
     def function(self, function: ast.FunctionDef | ast.AsyncFunctionDef) -> None:
-        scope = Scope(
-            {},
-            _locals(function),
-            self.scope.class_name,
-            self.scope.class_constants,
-            self.scope.module_constants,
+        nested = _functions(function.body, "")
+        scope = replace(
+            self.scope,
+            loop={},
+            local=_locals(function),
+            functions={**self.scope.functions, **nested},
         )
         self.walk(function.body, scope)
 

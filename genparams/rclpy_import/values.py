@@ -13,7 +13,7 @@ import ast
 import math
 import operator
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 # rclpy's Parameter.Type members (and rcl_interfaces' ParameterType constants) -> schema types.
@@ -96,15 +96,12 @@ class Scope:
     class_name: str | None = None
     class_constants: Mapping[str, ast.expr] = field(default_factory=dict)
     module_constants: Mapping[str, ast.expr] = field(default_factory=dict)
+    # Helpers that build a value (``def ranged(lo, hi): return ParameterDescriptor(...)``):
+    # the module's functions, the class's methods (as "self.name") and nested functions.
+    functions: Mapping[str, ast.FunctionDef] = field(default_factory=dict)
 
     def with_loop(self, bindings: Mapping[str, Any]) -> Scope:
-        return Scope(
-            {**self.loop, **bindings},
-            self.local,
-            self.class_name,
-            self.class_constants,
-            self.module_constants,
-        )
+        return replace(self, loop={**self.loop, **bindings})
 
 
 def unparsed(node: ast.AST, limit: int = 60) -> str:
@@ -170,6 +167,12 @@ class Evaluator:
             return self._attribute(node)
         if isinstance(node, ast.Call):
             return self._call(node)
+        if isinstance(node, ast.Subscript):
+            container, index = self.value(node.value), self.value(node.slice)
+            try:
+                return container[index]
+            except (IndexError, KeyError, TypeError):
+                pass
         raise UntranslatableError(node, f"the expression {unparsed(node)!r}")
 
     def _formatted(self, node: ast.JoinedStr) -> str:
@@ -241,6 +244,9 @@ class Evaluator:
     def _call(self, node: ast.Call) -> Any:
         function = dotted_name(node.func) or ""
         last = function.rpartition(".")[2]
+        helper = self.scope.functions.get(function)
+        if helper is not None:
+            return self._inlined(helper, node, method=function.startswith("self."))
         if last == "ParameterDescriptor":
             return self._descriptor(node)
         if last in ("FloatingPointRange", "IntegerRange"):
@@ -264,6 +270,55 @@ class Evaluator:
             if all(isinstance(b, int) and not isinstance(b, bool) for b in bounds):
                 return list(range(*bounds))
         raise UntranslatableError(node, f"a call of {unparsed(node.func)}()")
+
+    def _inlined(self, helper: ast.FunctionDef, call: ast.Call, *, method: bool) -> Any:
+        """The value a helper returns, when its body is one ``return`` (after a docstring)."""
+        body = helper.body
+        if body and isinstance(body[0], ast.Expr) and isinstance(body[0].value, ast.Constant):
+            body = body[1:]
+        spec = helper.args
+        if (
+            len(body) != 1
+            or not isinstance(body[0], ast.Return)
+            or body[0].value is None
+            or spec.vararg
+            or spec.kwarg
+            or spec.posonlyargs
+            or any(k.arg is None for k in call.keywords)
+        ):
+            raise UntranslatableError(call, f"a call of {unparsed(call.func)}()")
+        names = [a.arg for a in spec.args][1 if method else 0 :]
+        names += [a.arg for a in spec.kwonlyargs]
+        defaults = dict(
+            zip([a.arg for a in spec.args][-len(spec.defaults) :], spec.defaults, strict=False)
+        )
+        defaults.update(
+            {
+                a.arg: d
+                for a, d in zip(spec.kwonlyargs, spec.kw_defaults, strict=False)
+                if d is not None
+            }
+        )
+        if len(call.args) > len(names) - len(spec.kwonlyargs):
+            raise UntranslatableError(call, f"a call of {unparsed(call.func)}()")
+        bound: dict[str, Any] = {}
+        for name, argument in zip(names, call.args, strict=False):
+            bound[name] = self.value(argument)
+        for keyword in call.keywords:
+            assert keyword.arg is not None
+            bound[keyword.arg] = self.value(keyword.value)
+        outer = self.scope
+        try:
+            self.scope = replace(outer, loop={}, local={})
+            for name in names:
+                if name not in bound:
+                    if name not in defaults:
+                        raise UntranslatableError(call, f"a call of {unparsed(call.func)}()")
+                    bound[name] = self.value(defaults[name])
+            self.scope = replace(outer, loop=bound, local={})
+            return self.value(body[0].value)
+        finally:
+            self.scope = outer
 
     def _descriptor(self, node: ast.Call) -> DescriptorValue:
         descriptor = DescriptorValue()
