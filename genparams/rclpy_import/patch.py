@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import ast
 import difflib
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -165,8 +165,12 @@ class _Patcher:
         if parent.lineno == parent.end_lineno:
             text = open_ + ", ".join(texts) + ("," if len(texts) == 1 and close == ")" else "")
         else:
-            inner = " " * (kept[0].col_offset if hasattr(kept[0], "col_offset") else 4)
-            outer = self.source.indent(statement)
+            inner = " " * getattr(kept[0], "col_offset", 4)
+            assert parent.end_lineno is not None
+            last = self.source.lines[parent.end_lineno - 1]
+            outer = last[: len(last) - len(last.lstrip())]
+            if not last.lstrip().startswith(close):
+                outer = self.source.indent(statement)
             text = open_ + "\n" + "".join(f"{inner}{t},\n" for t in texts) + outer
         self.edits.append(_Edit(start, end, text + close))
 
@@ -201,10 +205,23 @@ class _Patcher:
             if read is not None:
                 return
             start, end = self.source.span(call)
-            self.edits.append(_Edit(start, end, f"self.get_parameter({names[0]!r})"))
+            quoted = self.quoted(call, names[0])
+            self.edits.append(_Edit(start, end, f"self.get_parameter({quoted})"))
             return
         start, end = self.source.span(call)
-        self.edits.append(_Edit(start, end, f"self.get_parameters({names!r})"))
+        listed = ", ".join(self.quoted(call, name) for name in names)
+        self.edits.append(_Edit(start, end, f"self.get_parameters([{listed}])"))
+
+    def quoted(self, call: ast.Call, text: str) -> str:
+        """``text`` as a string literal in the quotes the call's source uses."""
+        written = self.node.source[slice(*self.source.span(call))]
+        double = written.find('"') != -1 and (
+            written.find("'") == -1 or written.find('"') < written.find("'")
+        )
+        literal = repr(text)
+        if double and '"' not in text and literal.startswith("'"):
+            literal = '"' + literal[1:-1] + '"'
+        return literal
 
     def typed_read_span(self, call: ast.Call, name: str) -> _Edit | None:
         """``<call>.value`` or ``<call>.get_parameter_value().x_value`` -> a typed read."""
@@ -390,22 +407,45 @@ def _drop_unused_descriptors(text: str) -> str:
     for function in ast.walk(tree):
         if not isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
             continue
+        setters = {
+            id(target.value): statement
+            for statement in ast.walk(function)
+            if isinstance(statement, ast.Assign)
+            for target in statement.targets
+            if isinstance(target, ast.Attribute) and isinstance(target.value, ast.Name)
+        }
         loaded = {
             n.id
             for n in ast.walk(function)
-            if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load)
+            if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load) and id(n) not in setters
         }
         for statement in ast.walk(function):
             if not isinstance(statement, ast.Assign) or len(statement.targets) != 1:
                 continue
             target = statement.targets[0]
-            if isinstance(target, ast.Name) and target.id not in loaded:
-                value = statement.value
-                if isinstance(value, ast.Call) and _called(value) in _MESSAGES:
-                    span = source.line_span(statement)
+            value = statement.value
+            if (
+                isinstance(target, ast.Name)
+                and target.id not in loaded
+                and isinstance(value, ast.Call)
+                and _called(value) in _MESSAGES
+            ):
+                for dropped in [statement, *_sets_of(target.id, setters.values())]:
+                    span = source.line_span(dropped)
                     if span is not None:
                         edits.append(_Edit(span[0], span[1], ""))
     return _apply(text, edits)
+
+
+def _sets_of(name: str, setters: Iterable[ast.Assign]) -> list[ast.Assign]:
+    return [
+        s
+        for s in setters
+        if any(
+            isinstance(t, ast.Attribute) and isinstance(t.value, ast.Name) and t.value.id == name
+            for t in s.targets
+        )
+    ]
 
 
 def _called(call: ast.Call) -> str:
