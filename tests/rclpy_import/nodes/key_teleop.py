@@ -15,9 +15,7 @@ class KeyTeleop(Node):
         self._frame = self.declare_parameter("frame_id", "").value
         rotation = self.declare_parameter("rotation_rate", 1.0)
         self._rotation_rate = rotation.value
-        self._limits = self.declare_parameters(
-            "limits", [("linear", 1.0), ("angular", 2.0)]
-        )
+        self._limits = self.declare_parameters("limits", [("linear", 1.0), ("angular", 2.0)])
 
     def period(self) -> float:
         hz = self.get_parameter("hz").get_parameter_value().integer_value
