@@ -55,6 +55,11 @@ def run(args: argparse.Namespace) -> int:
         print(exc, file=sys.stderr)
         return 2
     imported = node.imported
+    if not imported.imported_names:
+        _report(imported)
+        print(f"genparams import-rclpy: {file}: no parameter could be imported: nothing written",
+              file=sys.stderr)  # fmt: skip
+        return 1
     schema = _header(args.source.name, node.unit_name) + schema_yaml(imported.data)
     try:  # the result must be a schema genparams accepts, or nothing is written
         load_schema(args.output or f"<{imported.name}>", schema)
@@ -72,6 +77,9 @@ def run(args: argparse.Namespace) -> int:
     else:
         print("the schema is not written without -o SCHEMA", file=sys.stderr)
     if diff is not None:
+        if not diff:
+            print("the patch changes nothing: only declarations on self in a class are rewritten",
+                  file=sys.stderr)  # fmt: skip
         sys.stdout.write(diff)
     return 1 if imported.warnings else 0
 

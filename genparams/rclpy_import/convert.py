@@ -99,7 +99,7 @@ class _Converter:
     def declaration(self, found: Found) -> str:
         at = found.at
         if found.name.problem is not None:
-            feature = awaiting_feature(found) if found.name_is_item else None
+            feature = awaiting_feature(found) if found.runtime_loop is not None else None
             reason = feature or f"a name computed at run time ({found.name.problem.what})"
             self.warn(at, "", f"{reason}: parameter left out")
             return LEFT_OUT
@@ -151,13 +151,11 @@ class _Converter:
         parts = name.split(".")
         if len(parts) > 1 and parts[-1] == "type":
             return "a namespace cannot hold a parameter named 'type'"
-        node: Any = self.tree
-        for index, part in enumerate(parts):
-            if not isinstance(node, dict) or "type" in node:
+        for index in range(1, len(parts)):
+            if ".".join(parts[:index]) in self.first:
                 return f"{'.'.join(parts[:index])!r} is a parameter, not a namespace"
-            if index == len(parts) - 1 and part in node:
-                return f"{name!r} is already a namespace"
-            node = node.get(part, {})
+        if any(other.startswith(name + ".") for other in self.first):
+            return f"{name!r} is already a namespace"
         return None
 
     def place(self, name: str, leaf: dict[str, Any]) -> None:

@@ -30,11 +30,9 @@ def awaiting_feature(found: Found | NodeOption) -> str | None:
     typed = descriptor is not None and isinstance(descriptor.fields.get("type"), TypeMarker)
     if typed and found.value.value is None and found.value.problem is None:
         return "a type in the descriptor without a value: needs an optional parameter"
-    if found.runtime_loop is not None and found.name_is_item:
-        return (
-            f"one parameter per item of {found.runtime_loop}, named by the item: "
-            "needs per-item parameters"
-        )
+    if found.runtime_loop is not None and (found.name_is_item or found.name.problem):
+        named = "named by the item" if found.name_is_item else "its name computed from the item"
+        return f"one parameter per item of {found.runtime_loop}, {named}: needs per-item parameters"
     if found.condition is not None:
         return f"declared only under a condition ({found.condition}): needs conditional declaration"
     return None

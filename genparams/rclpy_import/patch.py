@@ -8,8 +8,8 @@
   (the parameter genparams declared).
 - ``self.get_parameter('a.b').value`` (and ``.get_parameter_value().double_value``)
   of an imported parameter becomes ``self.params.a.b``.
-- The class is imported beside the other imports; rclpy descriptor names no
-  longer used are dropped from their imports.
+- The class is imported beside the other imports; names whose last use went
+  with a declaration (``ParameterDescriptor``, a descriptor variable) go too.
 
 Declarations left out of the schema stay as they are. Only ``self.``
 declarations inside the node class are rewritten.
@@ -30,7 +30,6 @@ from genparams.rclpy_import.values import Evaluator, Scope, UntranslatableError
 from genparams.runtime.naming import attribute_parts, class_name, module_name
 
 _READ_ATTRIBUTES = ("value",)
-_DESCRIPTOR_MODULES = ("rcl_interfaces.msg", "rclpy.parameter", "rclpy")
 
 
 @dataclass(frozen=True)
@@ -125,7 +124,7 @@ class _Patcher:
         text = _apply(self.node.source, self.edits)
         for _ in range(3):  # a descriptor may use a range variable
             text = _drop_unused_descriptors(text)
-        return _drop_unused_imports(text)
+        return _drop_unused_imports(self.node.source, text)
 
     def patchable(self) -> dict[ast.stmt, list[Found]]:
         """Statements to rewrite (declaring statements, or loops over literal items), each
@@ -369,28 +368,43 @@ def _free_attribute(cls: ast.ClassDef) -> str:
     return "genparams_params"
 
 
-def _drop_unused_imports(text: str) -> str:
-    """Names of rclpy's descriptor messages the patched file no longer uses leave their imports."""
+def _drop_unused_imports(before: str, text: str) -> str:
+    """Imported names the patch took the last use of leave their import statements."""
     try:
         tree = ast.parse(text)
+        was_used = _used_names(ast.parse(before))
     except SyntaxError:
         return text
-    used = {n.id for n in ast.walk(tree) if isinstance(n, ast.Name)}
+    used = _used_names(tree)
     source = _Source(text)
     edits = []
     for statement in tree.body:
-        if not isinstance(statement, ast.ImportFrom) or statement.module not in _DESCRIPTOR_MODULES:
+        if not isinstance(statement, (ast.Import, ast.ImportFrom)):
             continue
-        kept = [a for a in statement.names if (a.asname or a.name) in used]
-        if len(kept) == len(statement.names):
+        if isinstance(statement, ast.ImportFrom) and statement.module == "__future__":
             continue
+        kept = [
+            a
+            for a in statement.names
+            if (bound := a.asname or a.name.partition(".")[0]) in used or bound not in was_used
+        ]
         span = source.line_span(statement)
-        if span is None:
+        if len(kept) == len(statement.names) or span is None:
             continue
         names = ", ".join(a.name + (f" as {a.asname}" if a.asname else "") for a in kept)
-        replacement = f"from {statement.module} import {names}\n" if kept else ""
+        if not kept:
+            replacement = ""
+        elif isinstance(statement, ast.ImportFrom):
+            module = "." * statement.level + (statement.module or "")
+            replacement = f"from {module} import {names}\n"
+        else:
+            replacement = f"import {names}\n"
         edits.append(_Edit(span[0], span[1], replacement))
     return _apply(text, edits)
+
+
+def _used_names(tree: ast.Module) -> set[str]:
+    return {n.id for n in ast.walk(tree) if isinstance(n, ast.Name)}
 
 
 _MESSAGES = ("ParameterDescriptor", "FloatingPointRange", "IntegerRange")

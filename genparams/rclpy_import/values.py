@@ -50,6 +50,17 @@ _BINARY: dict[type[ast.operator], Callable[[Any, Any], Any]] = {
     ast.Pow: operator.pow,
 }
 _MATH = {"pi": math.pi, "e": math.e, "tau": math.tau, "inf": math.inf, "nan": math.nan}
+# rclpy's QoS policy enums, often a parameter's default (an IntEnum: rclpy declares an int).
+RCLPY_ENUMS = {
+    **{f"QoSReliabilityPolicy.{k}": v for k, v in
+       {"SYSTEM_DEFAULT": 0, "RELIABLE": 1, "BEST_EFFORT": 2, "BEST_AVAILABLE": 4}.items()},
+    **{f"QoSDurabilityPolicy.{k}": v for k, v in
+       {"SYSTEM_DEFAULT": 0, "TRANSIENT_LOCAL": 1, "VOLATILE": 2, "BEST_AVAILABLE": 4}.items()},
+    **{f"QoSHistoryPolicy.{k}": v for k, v in
+       {"SYSTEM_DEFAULT": 0, "KEEP_LAST": 1, "KEEP_ALL": 2}.items()},
+    **{f"QoSLivelinessPolicy.{k}": v for k, v in
+       {"SYSTEM_DEFAULT": 0, "AUTOMATIC": 1, "MANUAL_BY_TOPIC": 3, "BEST_AVAILABLE": 5}.items()},
+}  # fmt: skip
 _MAX_DEPTH = 32  # constants defined through constants, never in a loop
 
 
@@ -231,6 +242,9 @@ class Evaluator:
                 key = parts[-1].removeprefix("PARAMETER_")
                 if key in ROS_TYPES:
                     return TypeMarker(ROS_TYPES[key])
+            enum = ".".join(parts[-2:])
+            if enum in RCLPY_ENUMS and (len(parts) == 2 or parts[-3] == "qos"):
+                return RCLPY_ENUMS[enum]
             if head == "math" and rest in _MATH:
                 return _MATH[rest]
             if head in ("os", "environ") and "environ" in name:

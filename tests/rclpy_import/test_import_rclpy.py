@@ -13,6 +13,7 @@ import pytest
 import yaml
 
 from genparams.cli import main
+from genparams.rclpy_import.values import RCLPY_ENUMS
 from tests.rclpy_import.cases import CASES, GOLDEN, NODES, Case
 
 
@@ -58,11 +59,12 @@ def test_every_untranslatable_construct_is_a_warning_at_its_place(
         "legacy_bridge.py:30:13: retries: warning: integer_range on a double": "imported",
         "legacy_bridge.py:35:36: fast_mode: warning: declared only under": "conditional",
         "legacy_bridge.py:38:36: warning: one parameter per item": "per-item parameters",
-        "legacy_bridge.py:39:36: warning: a name computed at run time": "'joint'",
+        "legacy_bridge.py:39:36: warning: one parameter per item": "computed from the item",
     }
     for start, word in expected.items():
         assert any(line.startswith(start) and word in line for line in lines), start
     assert lines[-1] == "imported 5 of 12 parameters (2 approximately); 7 left out (see warnings)"
+    assert "one parameter per item of self.get_parameter('joints').value, its name computed" in err
     written = yaml.safe_load((tmp_path / "s.yaml").read_text("utf-8"))
     assert sorted(written["parameters"]) == ["baud", "joints", "limit", "rate", "retries"]
 
@@ -160,3 +162,11 @@ def write_goldens() -> None:
 
 if __name__ == "__main__":
     write_goldens()
+
+
+def test_rclpy_enum_values_are_rclpy_s() -> None:
+    from rclpy import qos
+
+    for name, value in RCLPY_ENUMS.items():
+        enum, member = name.split(".")
+        assert getattr(getattr(qos, enum), member).value == value, name

@@ -4,6 +4,7 @@ from typing import Any
 
 from rcl_interfaces.msg import FloatingPointRange, IntegerRange, ParameterDescriptor
 from rclpy.node import Node
+from rclpy.qos import QoSReliabilityPolicy
 
 DEFAULT_RATE = 30.0
 AXES = ["pan", "tilt"]
@@ -57,6 +58,7 @@ class CameraDriverNode(Node):
             self.declare_parameter(f"mount.{axis}.offset", 0.0)
         self.declare_parameter("topics", ["/image_raw", "/camera_info"])
         self.declare_parameter("ids", [1, 2, 3])
+        self.declare_parameter("image_reliability", QoSReliabilityPolicy.BEST_EFFORT)
         self.timer = self.create_timer(1.0 / self.fps, self.tick)
 
     def tick(self) -> None:
