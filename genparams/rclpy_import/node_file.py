@@ -33,9 +33,13 @@ def import_node(source: str, file: str, class_name: str | None = None) -> Import
     except SyntaxError as exc:
         line, column = exc.lineno or 1, exc.offset or 1
         raise NodeFileError(f"{file}:{line}:{column}: cannot parse as Python: {exc.msg}") from None
-    except ValueError as exc:  # NUL bytes
-        raise NodeFileError(f"{file}:1:1: cannot parse as Python: {exc}") from None
-    found = units(tree)
+    except (ValueError, RecursionError, MemoryError) as exc:  # NUL bytes, nesting
+        why = str(exc) or "nested too deeply"
+        raise NodeFileError(f"{file}:1:1: cannot parse as Python: {why}") from None
+    try:
+        found = units(tree)
+    except RecursionError:
+        raise NodeFileError(f"{file}:1:1: nested too deeply to read") from None
     classes = [u.name for u in found if u.name]
     if class_name is not None:
         chosen = [u for u in found if u.name == class_name]

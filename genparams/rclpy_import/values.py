@@ -165,7 +165,7 @@ class Evaluator:
                 return -operand if isinstance(node.op, ast.USub) else operand
         if isinstance(node, ast.BinOp) and type(node.op) in _BINARY:
             left, right = self.value(node.left), self.value(node.right)
-            if _same_kind(left, right):
+            if _same_kind(left, right) and not _too_large(node.op, left, right):
                 try:
                     return _BINARY[type(node.op)](left, right)
                 except (ArithmeticError, TypeError, ValueError):
@@ -380,6 +380,11 @@ def _same_kind(left: Any, right: Any) -> bool:
     if isinstance(left, str) and isinstance(right, str):
         return True
     return isinstance(left, list) and isinstance(right, list)
+
+
+def _too_large(op: ast.operator, left: Any, right: Any) -> bool:
+    """A power whose result could exhaust memory or time (``10 ** 10 ** 9``) is not computed."""
+    return isinstance(op, ast.Pow) and _is_number(right) and abs(right) > 64
 
 
 def _before(statement: ast.stmt, use: ast.AST) -> bool:

@@ -79,6 +79,11 @@ def test_stdout_without_output(capsys: pytest.CaptureFixture[str]) -> None:
     "text, message",
     [
         ("x = 1\ndef f(:\n", "cannot parse as Python"),
+        ("class A:\n  def f(self):\n    self.declare_parameter('a', 1)\n\x00", "cannot parse"),
+        (
+            "class A:\n  def f(self):\n    self.declare_parameter('a', " + "-" * 20000 + "1)\n",
+            "1:1: cannot parse as Python",
+        ),
         ("import rclpy\n\nprint('no parameters here')\n", "1:1: no parameter declaration"),
         (
             "class N:\n    def __init__(self):\n"
