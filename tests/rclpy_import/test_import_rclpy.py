@@ -1,6 +1,6 @@
 """`genparams import-rclpy`: golden schemas, warnings and patches; messages and exit codes.
 
-Update the golden files after an intended change: python -m tests.rclpy_import.test_import_rclpy
+Update the golden files after an intended change: make golden (python -m tests.update_golden rclpy)
 """
 
 from __future__ import annotations
@@ -147,11 +147,9 @@ def test_runs_as_a_command() -> None:
 def write_goldens() -> None:
     import contextlib
     import io
-    import os
     import tempfile
 
-    os.chdir(NODES)
-    with tempfile.TemporaryDirectory() as folder:
+    with contextlib.chdir(NODES), tempfile.TemporaryDirectory() as folder:
         for case in CASES:
             schema = Path(folder) / f"{case.name}.yaml"
             err = io.StringIO()
