@@ -70,6 +70,8 @@ class _Converter:
             message = awaiting_feature(option)
             if message is not None:
                 self.warn(option.at, "", message)
+        for change in self.unit.afterwards:
+            self.warn(change.at, "", f"{change.construct}: the schema keeps the declared one")
         for found in self.unit.found:
             self.imported.outcome.append((found, self.declaration(found)))
         data: dict[str, Any] = {"genparams": 1, "name": self.imported.name}

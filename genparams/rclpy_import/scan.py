@@ -29,6 +29,11 @@ DECLARE_MANY = "declare_parameters"
 # Node(...) options and calls that make parameters whose names come from params files.
 OPEN_OPTIONS = ("automatically_declare_parameters_from_overrides", "allow_undeclared_parameters")
 BY_PREFIX = "get_parameters_by_prefix"
+# Calls that change declared parameters after the fact: the schema cannot follow them.
+AFTERWARDS = {
+    "set_descriptor": "set_descriptor() changes a descriptor after its declaration",
+    "undeclare_parameter": "undeclare_parameter() removes a parameter after its declaration",
+}
 _NESTED = (ast.Lambda, ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
 
 
@@ -82,6 +87,7 @@ class Unit:
     docstring: str | None
     found: list[Found] = field(default_factory=list)
     options: list[NodeOption] = field(default_factory=list)
+    afterwards: list[NodeOption] = field(default_factory=list)  # see AFTERWARDS
 
 
 def declares(node: ast.AST) -> bool:
@@ -275,6 +281,8 @@ class _Scanner:
             return
         if call.func.attr == BY_PREFIX:
             self.unit.options.append(NodeOption(call, f"{BY_PREFIX}()"))
+        elif call.func.attr in AFTERWARDS:
+            self.unit.afterwards.append(NodeOption(call, AFTERWARDS[call.func.attr]))
         elif call.func.attr == DECLARE_ONE:
             self.declare_one(call, statement, scope, context)
         elif call.func.attr == DECLARE_MANY:

@@ -60,6 +60,7 @@ def test_every_untranslatable_construct_is_a_warning_at_its_place(
         "legacy_bridge.py:35:36: fast_mode: warning: declared only under": "conditional",
         "legacy_bridge.py:38:36: warning: one parameter per item": "per-item parameters",
         "legacy_bridge.py:39:36: warning: one parameter per item": "computed from the item",
+        "legacy_bridge.py:46:9: warning: set_descriptor() changes a descriptor": "declared one",
     }
     for start, word in expected.items():
         assert any(line.startswith(start) and word in line for line in lines), start

@@ -41,3 +41,6 @@ class LegacyBridge(Node):
     def poll(self) -> float:
         rate: float = self.get_parameter("rate").value
         return rate
+
+    def relax(self) -> None:
+        self.set_descriptor("rate", ParameterDescriptor(description="Polling rate."))
