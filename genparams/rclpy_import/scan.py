@@ -384,7 +384,8 @@ def _calls(node: ast.AST, nested: str | None) -> Iterator[tuple[ast.Call, str | 
 
 def _locals(function: ast.FunctionDef | ast.AsyncFunctionDef) -> dict[str, list[ast.stmt]]:
     """Assignments to the function's variables (``x = ...``), and to attributes of them
-    (``descriptor.read_only = ...`` under the key ``descriptor.*``), in source order."""
+    (``descriptor.read_only = ...`` under the keys ``descriptor.*`` and
+    ``descriptor.read_only``, ``self.rate = ...`` under ``self.rate``), in source order."""
     out: dict[str, list[ast.stmt]] = {}
     for node in ast.walk(function):
         if isinstance(node, ast.Assign):
@@ -393,6 +394,7 @@ def _locals(function: ast.FunctionDef | ast.AsyncFunctionDef) -> dict[str, list[
                     out.setdefault(target.id, []).append(node)
                 elif isinstance(target, ast.Attribute) and isinstance(target.value, ast.Name):
                     out.setdefault(f"{target.value.id}.*", []).append(node)
+                    out.setdefault(f"{target.value.id}.{target.attr}", []).append(node)
                 elif isinstance(target, (ast.Tuple, ast.List)):  # unpacking: not followed
                     for name in ast.walk(target):
                         if isinstance(name, ast.Name):
@@ -418,7 +420,9 @@ def _locals(function: ast.FunctionDef | ast.AsyncFunctionDef) -> dict[str, list[
 
 
 def _position(node: ast.AST) -> dict[str, int]:
-    return {"lineno": getattr(node, "lineno", 0), "col_offset": getattr(node, "col_offset", 0)}
+    """A placeholder's place: where the binding starts (a loop variable is bound there)."""
+    line, column = getattr(node, "lineno", 0), getattr(node, "col_offset", 0)
+    return {"lineno": line, "col_offset": column, "end_lineno": line, "end_col_offset": column}
 
 
 def _arguments(call: ast.Call, names: tuple[str, ...]) -> dict[str, ast.expr]:

@@ -251,6 +251,10 @@ class Evaluator:
                 raise UntranslatableError(node, "a value read from the environment")
             if head in ("self", self.scope.class_name) and rest in self.scope.class_constants:
                 return self.value(self.scope.class_constants[rest])
+            if head == "self" and "." not in rest:  # self.rate = 10.0 earlier in the method
+                assigned = _last_before(self.scope.local.get(name, []), node)
+                if isinstance(assigned, ast.Assign) and len(assigned.targets) == 1:
+                    return self.value(assigned.value)
             if head == "self":
                 raise UntranslatableError(node, f"the attribute {name!r}")
         raise UntranslatableError(node, f"the expression {unparsed(node)!r}")
@@ -388,10 +392,13 @@ def _too_large(op: ast.operator, left: Any, right: Any) -> bool:
 
 
 def _before(statement: ast.stmt, use: ast.AST) -> bool:
-    return (statement.lineno, statement.col_offset) < (
-        getattr(use, "lineno", 0),
-        getattr(use, "col_offset", 0),
+    """Whether ``statement`` ends before ``use`` starts (``x = f(x)`` does not precede its
+    own ``x``)."""
+    end = (
+        getattr(statement, "end_lineno", None) or statement.lineno,
+        getattr(statement, "end_col_offset", None) or statement.col_offset,
     )
+    return end <= (getattr(use, "lineno", 0), getattr(use, "col_offset", 0))
 
 
 def _last_before(statements: list[ast.stmt], use: ast.AST) -> ast.stmt | None:

@@ -72,7 +72,7 @@ def test_every_untranslatable_construct_is_a_warning_at_its_place(
 
 def test_stdout_without_output(capsys: pytest.CaptureFixture[str]) -> None:
     code, out, err = run(capsys, str(NODES / "key_teleop.py"))
-    assert code == 0 and err.endswith("imported 8 of 8 parameters\n")
+    assert code == 0 and err.endswith("imported 9 of 9 parameters\n")
     assert out == (GOLDEN / "key_teleop.yaml").read_text("utf-8")
 
 

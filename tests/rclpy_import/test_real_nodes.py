@@ -99,7 +99,7 @@ def test_every_case_is_counted() -> None:
                counts.items()}  # fmt: skip
     assert tallies == {
         "camera_driver": (12, 0, 0),
-        "key_teleop": (8, 0, 0),
+        "key_teleop": (9, 0, 0),
         "legacy_bridge": (3, 2, 7),
         "serial_driver": (2, 0, 0),
         "two_nodes_service": (1, 0, 0),

@@ -13,6 +13,8 @@ class KeyTeleop(Node):
         self._backward_rate = self.declare_parameter("backward_rate", 0.5).value
         self._stamped = self.declare_parameter("twist_stamped_enabled", True).value
         self._frame = self.declare_parameter("frame_id", "").value
+        self.repeat_rate = 20.0
+        self.repeat_rate = self.declare_parameter("repeat_rate", self.repeat_rate).value
         rotation = self.declare_parameter("rotation_rate", 1.0)
         self._rotation_rate = rotation.value
         self._limits = self.declare_parameters("limits", [("linear", 1.0), ("angular", 2.0)])
