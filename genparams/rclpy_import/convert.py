@@ -74,12 +74,41 @@ class _Converter:
             self.warn(change.at, "", f"{change.construct}: the schema keeps the declared one")
         for found in self.unit.found:
             self.imported.outcome.append((found, self.declaration(found)))
+        self.keep_groups_whole()
         data: dict[str, Any] = {"genparams": 1, "name": self.imported.name}
         if self.unit.docstring:
-            data["description"] = self.unit.docstring.strip().split("\n\n")[0]
+            data["description"] = " ".join(self.unit.docstring.strip().split("\n\n")[0].split())
         data["parameters"] = self.tree
         self.imported.data = data
         return self.imported
+
+    def keep_groups_whole(self) -> None:
+        """One statement declaring several parameters (a loop over literal items, a
+        declare_parameters list whose result is used) stays in the node whole when any
+        of them is left out: the others are left out with it, or the node would declare
+        them twice."""
+        groups: dict[int, list[int]] = {}
+        for index, (found, _) in enumerate(self.imported.outcome):
+            if found.literal_loop is not None:
+                groups.setdefault(id(found.literal_loop), []).append(index)
+            elif found.in_list and not (
+                isinstance(found.statement, ast.Expr) and found.statement.value is found.call
+            ):
+                groups.setdefault(id(found.call), []).append(index)
+        for members in groups.values():
+            outcomes = [self.imported.outcome[i] for i in members]
+            if all(o != LEFT_OUT for _, o in outcomes) or all(o == LEFT_OUT for _, o in outcomes):
+                continue
+            for index in members:
+                found, outcome = self.imported.outcome[index]
+                if outcome == LEFT_OUT:
+                    continue
+                name = found.name.value
+                self.warn(found.at, name, "declared by the same statement as a parameter left "
+                          "out: left out with it")  # fmt: skip
+                self.unplace(name)
+                del self.first[name]
+                self.imported.outcome[index] = (found, LEFT_OUT)
 
     def location(self, node: ast.AST) -> Location:
         line = getattr(node, "lineno", 1)
@@ -159,6 +188,17 @@ class _Converter:
         if any(other.startswith(name + ".") for other in self.first):
             return f"{name!r} is already a namespace"
         return None
+
+    def unplace(self, name: str) -> None:
+        """Take a parameter out of the tree, and the namespaces it leaves empty."""
+        parts = name.split(".")
+        chain = [self.tree]
+        for part in parts[:-1]:
+            chain.append(chain[-1][part])
+        del chain[-1][parts[-1]]
+        for depth in range(len(parts) - 1, 0, -1):
+            if not chain[depth]:
+                del chain[depth - 1][parts[depth - 1]]
 
     def place(self, name: str, leaf: dict[str, Any]) -> None:
         *spaces, last = name.split(".")

@@ -78,7 +78,10 @@ def patch_diff(node: ImportedNode, file: str) -> str:
     patched = patched_source(node, file)
     before = node.source.splitlines(keepends=True)
     after = patched.splitlines(keepends=True)
-    return "".join(difflib.unified_diff(before, after, file, file))
+    lines = difflib.unified_diff(before, after, file, file)
+    # a last line without a newline is marked as diff and patch expect it
+    return "".join(line if line.endswith("\n") else f"{line}\n\\ No newline at end of file\n"
+                   for line in lines)  # fmt: skip
 
 
 def patched_source(node: ImportedNode, file: str) -> str:

@@ -5,6 +5,7 @@ Update the golden files after an intended change: make golden (python -m tests.u
 
 from __future__ import annotations
 
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -174,3 +175,32 @@ def test_rclpy_enum_values_are_rclpy_s() -> None:
     for name, value in RCLPY_ENUMS.items():
         enum, member = name.split(".")
         assert getattr(getattr(qos, enum), member).value == value, name
+
+
+def test_a_statement_declaring_several_stays_whole_when_one_is_left_out(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    source = tmp_path / "mixed.py"
+    source.write_text(
+        "class M:\n"
+        "    def __init__(self):\n"
+        "        for n in ['a', 'bad-name']:\n"
+        "            self.declare_parameter(n, 1)\n"
+        "        self.declare_parameter('keep', 2)",  # no newline at the end
+        encoding="utf-8",
+    )
+    monkeypatch.chdir(tmp_path)
+    code, diff, err = run(capsys, "mixed.py", "--patch")
+    assert code == 1
+    assert (
+        "mixed.py:4:36: a: warning: declared by the same statement as a parameter left out" in err
+    )
+    assert "imported 1 of 3 parameters; 2 left out (see warnings)" in err
+    assert "-            self.declare_parameter(n, 1)" not in diff
+    assert diff.endswith(
+        "-        self.declare_parameter('keep', 2)\n\\ No newline at end of file\n"
+        "+        self.params = MParams.declare(self)\n"
+    )
+    if shutil.which("patch"):
+        subprocess.run(["patch", "-p0", "--quiet"], input=diff, text=True, check=True)
+        assert source.read_text("utf-8").endswith("        self.params = MParams.declare(self)\n")
