@@ -18,6 +18,7 @@ from genparams.commands import (
     generate,
     import_gpl,
     import_node,
+    import_rclpy,
     json_schema,
     tune,
     validate,
@@ -36,6 +37,7 @@ COMMANDS = (
     audit,
     import_gpl,
     import_node,
+    import_rclpy,
     cmake_dir,
 )
 

@@ -4,6 +4,7 @@
     python -m tests.update_golden cases     # tests/cases/*/expected_params.py (modules)
     python -m tests.update_golden bad       # tests/bad_schemas/*.stderr
     python -m tests.update_golden outputs   # docs, defaults, JSON Schema, check_params/*
+    python -m tests.update_golden rclpy     # tests/rclpy_import/golden (import-rclpy)
 
 Review the diff before committing: every changed line is a change users see.
 """
@@ -37,7 +38,7 @@ def update_bad_schemas() -> int:
     return len(bad_schemas())
 
 
-KINDS = ("cases", "bad", "outputs")
+KINDS = ("cases", "bad", "outputs", "rclpy")
 
 
 def main(argv: list[str]) -> int:
@@ -52,6 +53,11 @@ def main(argv: list[str]) -> int:
     if "outputs" in kinds:
         update()
         print("rewrote docs, defaults, JSON Schema and check-params goldens")
+    if "rclpy" in kinds:
+        from tests.rclpy_import.test_import_rclpy import write_goldens
+
+        write_goldens()
+        print("rewrote import-rclpy schemas, messages and patches")
     return 0
 
 

@@ -49,7 +49,7 @@ def run(args: argparse.Namespace) -> int:
         f"# genparams schema read from the running node {node} by `genparams import-node`.\n"
         "# Its values at that moment are the defaults. Edit freely: this file is now the source.\n"
     )
-    text = schema_yaml(imported.data, header)
+    text = header + schema_yaml(imported.data)
     try:  # the result must be a schema genparams accepts, or nothing is written
         load_schema(f"<schema read from {node}, not written>", text)
     except SchemaError as exc:

@@ -33,7 +33,7 @@ def schema_text(imported: Imported, source: str) -> str:
         f"# genparams schema imported from the generate_parameter_library file {source}\n"
         "# by `genparams import-gpl`. Edit freely: this file is now the source.\n"
     )
-    return schema_yaml(imported.data, header)
+    return header + schema_yaml(imported.data)
 
 
 def stub_text(imported: Imported, module: str) -> str:

@@ -1,4 +1,4 @@
-"""A schema as people write it: the text the importers write (import-gpl, import-node)."""
+"""A schema as people write it: the text import-gpl, import-rclpy and import-node write."""
 
 from __future__ import annotations
 
@@ -39,9 +39,9 @@ _Dumper.add_representer(dict, _mapping)
 _Dumper.add_representer(str, _text)
 
 
-def schema_yaml(data: dict[str, Any], header: str) -> str:
-    """``data`` (a schema as plain data) as YAML text under the comment lines ``header``."""
-    body = yaml.dump(
+def schema_yaml(data: dict[str, Any]) -> str:
+    """``data`` (a schema as plain data, keys in order) as YAML text."""
+    return yaml.dump(
         data,
         Dumper=_Dumper,
         sort_keys=False,
@@ -49,4 +49,3 @@ def schema_yaml(data: dict[str, Any], header: str) -> str:
         width=100,
         default_flow_style=False,
     )
-    return header + body

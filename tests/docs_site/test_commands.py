@@ -48,7 +48,7 @@ def cases() -> list[Any]:
 def workspace(tmp_path: Path) -> Path:
     root = tmp_path / "repo"
     shutil.copytree(ROOT / "examples", root / "examples", ignore=shutil.ignore_patterns("build"))
-    for folder in ("cases", "bad_schemas", "gpl"):
+    for folder in ("cases", "bad_schemas", "gpl", "rclpy_import"):
         shutil.copytree(ROOT / "tests" / folder, root / "tests" / folder)
     (tmp_path / "out").mkdir()
     return root

@@ -1,0 +1,1 @@
+"""Import of hand-written rclpy nodes (their declare_parameter calls) into genparams schemas."""

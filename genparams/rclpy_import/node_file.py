@@ -1,0 +1,68 @@
+"""One node file -> the unit to import and its schema: parsing, picking the class, naming."""
+
+from __future__ import annotations
+
+import ast
+from dataclasses import dataclass
+from pathlib import Path
+
+from genparams.rclpy_import.convert import Imported, convert, schema_name
+from genparams.rclpy_import.features import awaiting_feature
+from genparams.rclpy_import.scan import Unit, units
+
+
+class NodeFileError(Exception):
+    """The file cannot be imported at all (message: FILE:LINE:COL: what)."""
+
+
+@dataclass
+class ImportedNode:
+    source: str  # the file's text
+    tree: ast.Module
+    unit: Unit
+    imported: Imported
+
+    @property
+    def unit_name(self) -> str:
+        return self.unit.name
+
+
+def import_node(source: str, file: str, class_name: str | None = None) -> ImportedNode:
+    try:
+        tree = ast.parse(source, filename=file)
+    except SyntaxError as exc:
+        line, column = exc.lineno or 1, exc.offset or 1
+        raise NodeFileError(f"{file}:{line}:{column}: cannot parse as Python: {exc.msg}") from None
+    except (ValueError, RecursionError, MemoryError) as exc:  # NUL bytes, nesting
+        why = str(exc) or "nested too deeply"
+        raise NodeFileError(f"{file}:1:1: cannot parse as Python: {why}") from None
+    try:
+        found = units(tree)
+    except RecursionError:
+        raise NodeFileError(f"{file}:1:1: nested too deeply to read") from None
+    classes = [u.name for u in found if u.name]
+    if class_name is not None:
+        chosen = [u for u in found if u.name == class_name]
+        if not chosen:
+            which = f"classes that do: {', '.join(classes)}" if classes else "none does"
+            raise NodeFileError(f"{file}:1:1: no class {class_name} declaring parameters ({which})")
+        unit = chosen[0]
+    elif not found:
+        raise NodeFileError(
+            f"{file}:1:1: no parameter declaration (declare_parameter or declare_parameters) found"
+        )
+    elif len(found) > 1:
+        names = ", ".join(u.name or "the module's functions" for u in found)
+        raise NodeFileError(
+            f"{file}:1:1: several parts declare parameters ({names}): pick a class with --class"
+        )
+    else:
+        unit = found[0]
+    if not unit.found:
+        first = unit.options[0] if unit.options else None
+        where = f"{first.at.lineno}:{first.at.col_offset + 1}" if first else "1:1"  # type: ignore[attr-defined]
+        why = f": {awaiting_feature(first)}" if first else ""
+        raise NodeFileError(f"{file}:{where}: no parameter declaration found{why}")
+    name = schema_name(unit.name, Path(file).stem)
+    imported = convert(unit, file, source.splitlines(), name)
+    return ImportedNode(source, tree, unit, imported)

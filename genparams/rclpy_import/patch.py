@@ -1,0 +1,470 @@
+"""The node's source, changed to use the generated class: a unified diff.
+
+- Declarations the schema now holds go: a statement that only declares is
+  removed (a loop over literal items that only declares, too); the first one
+  becomes ``self.params = XParams.declare(self)``.
+- A declaration whose result is used becomes a read: ``.value`` -> the typed
+  read ``self.params.a.b``; anything else -> ``self.get_parameter('a.b')``
+  (the parameter genparams declared).
+- ``self.get_parameter('a.b').value`` (and ``.get_parameter_value().double_value``)
+  of an imported parameter becomes ``self.params.a.b``.
+- The class is imported beside the other imports; names whose last use went
+  with a declaration (``ParameterDescriptor``, a descriptor variable) go too.
+
+Declarations left out of the schema stay as they are. Only ``self.``
+declarations inside the node class are rewritten.
+"""
+
+from __future__ import annotations
+
+import ast
+import difflib
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass
+from pathlib import Path
+
+from genparams.rclpy_import.convert import LEFT_OUT
+from genparams.rclpy_import.node_file import ImportedNode
+from genparams.rclpy_import.scan import DECLARE_ONE, Found
+from genparams.rclpy_import.values import Evaluator, Scope, UntranslatableError
+from genparams.runtime.naming import attribute_parts, class_name, module_name
+
+_READ_ATTRIBUTES = ("value",)
+
+
+@dataclass(frozen=True)
+class _Edit:
+    start: int  # character offsets into the source
+    end: int
+    text: str
+
+
+class _Source:
+    def __init__(self, text: str) -> None:
+        self.text = text
+        self.lines = text.splitlines(keepends=True)
+        self.starts = [0]
+        for line in self.lines:
+            self.starts.append(self.starts[-1] + len(line))
+
+    def offset(self, line: int, byte_column: int) -> int:
+        text = self.lines[line - 1] if line - 1 < len(self.lines) else ""
+        column = len(text.encode("utf-8")[:byte_column].decode("utf-8", errors="replace"))
+        return self.starts[line - 1] + column
+
+    def span(self, node: ast.AST) -> tuple[int, int]:
+        start = self.offset(node.lineno, node.col_offset)  # type: ignore[attr-defined]
+        end = self.offset(node.end_lineno, node.end_col_offset)  # type: ignore[attr-defined]
+        return start, end
+
+    def line_span(self, node: ast.stmt) -> tuple[int, int] | None:
+        """The whole lines of ``node``, if nothing else stands on them (comments may)."""
+        start, end = self.span(node)
+        line_start = self.starts[node.lineno - 1]
+        assert node.end_lineno is not None
+        line_end = self.starts[node.end_lineno]
+        before = self.text[line_start:start]
+        after = self.text[end:line_end].strip()
+        if before.strip() or (after and not after.startswith("#")):
+            return None
+        return line_start, line_end
+
+    def indent(self, node: ast.stmt) -> str:
+        line = self.lines[node.lineno - 1]
+        return line[: len(line) - len(line.lstrip())]
+
+
+def patch_diff(node: ImportedNode, file: str) -> str:
+    patched = patched_source(node, file)
+    before = node.source.splitlines(keepends=True)
+    after = patched.splitlines(keepends=True)
+    lines = difflib.unified_diff(before, after, file, file)
+    # a last line without a newline is marked as diff and patch expect it
+    return "".join(line if line.endswith("\n") else f"{line}\n\\ No newline at end of file\n"
+                   for line in lines)  # fmt: skip
+
+
+def patched_source(node: ImportedNode, file: str) -> str:
+    if not isinstance(node.unit.node, ast.ClassDef):
+        return node.source  # declarations on other receivers: left to the author
+    return _Patcher(node, file).run()
+
+
+class _Patcher:
+    def __init__(self, node: ImportedNode, file: str) -> None:
+        self.node = node
+        self.file = file
+        self.source = _Source(node.source)
+        cls = node.unit.node
+        assert isinstance(cls, ast.ClassDef)
+        self.cls = cls
+        self.parents = {
+            child: parent for parent in ast.walk(cls) for child in ast.iter_child_nodes(parent)
+        }
+        self.schema = node.imported.name
+        self.class_name = class_name(self.schema)
+        self.attribute = _free_attribute(cls)
+        self.names = node.imported.imported_names
+        self.edits: list[_Edit] = []
+        self.removed: list[ast.stmt] = []
+        self.removals: dict[int, _Edit] = {}
+
+    def run(self) -> str:
+        patchable = self.patchable()
+        if not patchable:
+            return self.node.source
+        first = min(patchable, key=lambda s: (s.lineno, s.col_offset))
+        removed_first = False
+        for statement, founds in patchable.items():
+            removed = self.rewrite(statement, founds)
+            if statement is first:
+                removed_first = removed
+        declare = f"self.{self.attribute} = {self.class_name}.declare(self)"
+        self.place_declare(first, declare, removed_first)
+        self.fill_emptied(first if removed_first else None)
+        self.rewrite_reads()
+        self.add_import()
+        text = _apply(self.node.source, self.edits)
+        for _ in range(3):  # a descriptor may use a range variable
+            text = _drop_unused_descriptors(text)
+        return _drop_unused_imports(self.node.source, text)
+
+    def patchable(self) -> dict[ast.stmt, list[Found]]:
+        """Statements to rewrite (declaring statements, or loops over literal items), each
+        with its declarations; only when every declaration they make was imported."""
+        groups: dict[ast.stmt, list[tuple[Found, str]]] = {}
+        for found, outcome in self.node.imported.outcome:
+            statement: ast.stmt = found.literal_loop or found.statement
+            groups.setdefault(statement, []).append((found, outcome))
+        out = {}
+        for statement, items in groups.items():
+            if any(not f.receiver_is_self for f, _ in items):
+                continue
+            if any(o == LEFT_OUT for _, o in items):
+                self.keep_left_out(statement, items)
+                continue
+            if isinstance(statement, ast.For) and not _only_declares(statement):
+                continue
+            out[statement] = [f for f, _ in items]
+        return out
+
+    def keep_left_out(self, statement: ast.stmt, items: list[tuple[Found, str]]) -> None:
+        """A declare_parameters statement whose list is imported in part keeps the rest."""
+        call = items[0][0].call
+        if not (isinstance(statement, ast.Expr) and statement.value is call):
+            return
+        if not all(f.in_list and f.call is call for f, _ in items):
+            return
+        parent = self.parents.get(items[0][0].at)
+        if not isinstance(parent, (ast.List, ast.Tuple)):
+            return
+        if any(self.parents.get(f.at) is not parent for f, _ in items):
+            return
+        kept = [f.at for f, o in items if o == LEFT_OUT]
+        texts = [self.node.source[slice(*self.source.span(n))] for n in kept]
+        start, end = self.source.span(parent)
+        open_, close = ("[", "]") if isinstance(parent, ast.List) else ("(", ")")
+        if parent.lineno == parent.end_lineno:
+            text = open_ + ", ".join(texts) + ("," if len(texts) == 1 and close == ")" else "")
+        else:
+            inner = " " * getattr(kept[0], "col_offset", 4)
+            assert parent.end_lineno is not None
+            last = self.source.lines[parent.end_lineno - 1]
+            outer = last[: len(last) - len(last.lstrip())]
+            if not last.lstrip().startswith(close):
+                outer = self.source.indent(statement)
+            text = open_ + "\n" + "".join(f"{inner}{t},\n" for t in texts) + outer
+        self.edits.append(_Edit(start, end, text + close))
+
+    def rewrite(self, statement: ast.stmt, founds: list[Found]) -> bool:
+        """Rewrite one statement; True when it is removed."""
+        if isinstance(statement, ast.For) or (
+            isinstance(statement, ast.Expr) and statement.value is founds[0].call
+        ):
+            self.remove(statement)
+            return True
+        calls = {id(f.call): f.call for f in founds}
+        for call in calls.values():
+            names = [f.name.value for f in founds if f.call is call]
+            self.replace_use(call, names)
+        return False
+
+    def remove(self, statement: ast.stmt) -> None:
+        span = self.source.line_span(statement)
+        if span is None:
+            start, end = self.source.span(statement)
+            edit = _Edit(start, end, "pass")
+        else:
+            edit = _Edit(span[0], span[1], "")
+        self.edits.append(edit)
+        self.removals[id(statement)] = edit
+        self.removed.append(statement)
+
+    def replace_use(self, call: ast.Call, names: list[str]) -> None:
+        assert isinstance(call.func, ast.Attribute)
+        if call.func.attr == DECLARE_ONE:
+            read = self.typed_read_span(call, names[0])
+            if read is not None:
+                return
+            start, end = self.source.span(call)
+            quoted = self.quoted(call, names[0])
+            self.edits.append(_Edit(start, end, f"self.get_parameter({quoted})"))
+            return
+        start, end = self.source.span(call)
+        listed = ", ".join(self.quoted(call, name) for name in names)
+        self.edits.append(_Edit(start, end, f"self.get_parameters([{listed}])"))
+
+    def quoted(self, call: ast.Call, text: str) -> str:
+        """``text`` as a string literal in the quotes the call's source uses."""
+        written = self.node.source[slice(*self.source.span(call))]
+        double = written.find('"') != -1 and (
+            written.find("'") == -1 or written.find('"') < written.find("'")
+        )
+        literal = repr(text)
+        if double and '"' not in text and literal.startswith("'"):
+            literal = '"' + literal[1:-1] + '"'
+        return literal
+
+    def typed_read_span(self, call: ast.Call, name: str) -> _Edit | None:
+        """``<call>.value`` or ``<call>.get_parameter_value().x_value`` -> a typed read."""
+        outer = _read_of(call, self.parents)
+        if outer is None:
+            return None
+        start, end = self.source.span(outer)
+        read = ".".join((f"self.{self.attribute}", *attribute_parts(name)))
+        edit = _Edit(start, end, read)
+        self.edits.append(edit)
+        return edit
+
+    def place_declare(self, first: ast.stmt, declare: str, removed_first: bool) -> None:
+        indent = self.source.indent(first)
+        if removed_first:
+            old = self.removals[id(first)]
+            self.edits.remove(old)
+            text = f"{indent}{declare}\n" if old.text == "" else declare
+            self.edits.append(_Edit(old.start, old.end, text))
+        else:
+            start = self.source.starts[first.lineno - 1]
+            self.edits.append(_Edit(start, start, f"{indent}{declare}\n"))
+
+    def fill_emptied(self, keep: ast.stmt | None) -> None:
+        """A block whose every statement was removed gets ``pass``."""
+        for statement in self.removed:
+            body = _body_of(statement, self.parents)
+            if body is None or statement is not body[0] or keep in body:
+                continue
+            if not all(s in self.removed for s in body):
+                continue
+            old = self.removals[id(statement)]
+            self.edits.remove(old)
+            text = f"{self.source.indent(statement)}pass\n" if old.text == "" else "pass"
+            self.edits.append(_Edit(old.start, old.end, text))
+
+    def rewrite_reads(self) -> None:
+        scope = Scope(class_name=self.cls.name)
+        taken = [(e.start, e.end) for e in self.edits]
+        for call in _self_calls(self.cls, "get_parameter"):
+            if len(call.args) != 1 or call.keywords:
+                continue
+            try:
+                name = Evaluator(scope).value(call.args[0])
+            except UntranslatableError:
+                continue
+            if name not in self.names:
+                continue
+            outer = _read_of(call, self.parents)
+            if outer is None:
+                continue
+            start, end = self.source.span(outer)
+            if any(s < end and start < e for s, e in taken):
+                continue
+            read = ".".join((f"self.{self.attribute}", *attribute_parts(name)))
+            self.edits.append(_Edit(start, end, read))
+
+    def add_import(self) -> None:
+        package = (Path(self.file).parent / "__init__.py").is_file()
+        module = ("." if package else "") + module_name(self.schema)
+        line = f"from {module} import {self.class_name}\n"
+        imports = [s for s in self.node.tree.body if isinstance(s, (ast.Import, ast.ImportFrom))]
+        last = max((s.end_lineno or s.lineno for s in imports), default=0)
+        at = self.source.starts[last]
+        self.edits.append(_Edit(at, at, line))
+
+
+def _apply(text: str, edits: list[_Edit]) -> str:
+    out = []
+    position = 0
+    for edit in sorted(edits, key=lambda e: (e.start, e.end)):
+        if edit.start < position:
+            continue  # overlapping: the first edit wins
+        out.append(text[position : edit.start])
+        out.append(edit.text)
+        position = edit.end
+    out.append(text[position:])
+    return "".join(out)
+
+
+def _read_of(call: ast.Call, parents: dict[ast.AST, ast.AST]) -> ast.AST | None:
+    parent = parents.get(call)
+    if isinstance(parent, ast.Attribute) and parent.attr in _READ_ATTRIBUTES:
+        return parent
+    if isinstance(parent, ast.Attribute) and parent.attr == "get_parameter_value":
+        value_call = parents.get(parent)
+        outer = parents.get(value_call) if value_call is not None else None
+        if (
+            isinstance(value_call, ast.Call)
+            and not value_call.args
+            and isinstance(outer, ast.Attribute)
+            and outer.attr.endswith("_value")
+        ):
+            return outer
+    return None
+
+
+def _self_calls(root: ast.AST, method: str) -> Iterator[ast.Call]:
+    for node in ast.walk(root):
+        if (
+            isinstance(node, ast.Call)
+            and isinstance(node.func, ast.Attribute)
+            and node.func.attr == method
+            and isinstance(node.func.value, ast.Name)
+            and node.func.value.id == "self"
+        ):
+            yield node
+
+
+def _only_declares(loop: ast.For) -> bool:
+    return (
+        all(
+            isinstance(s, ast.Expr)
+            and isinstance(s.value, ast.Call)
+            and isinstance(s.value.func, ast.Attribute)
+            and s.value.func.attr.startswith("declare_parameter")
+            for s in loop.body
+        )
+        and not loop.orelse
+    )
+
+
+def _body_of(statement: ast.stmt, parents: dict[ast.AST, ast.AST]) -> list[ast.stmt] | None:
+    parent = parents.get(statement)
+    if parent is None:
+        return None
+    for name in ("body", "orelse", "finalbody"):
+        body = getattr(parent, name, None)
+        if isinstance(body, list) and statement in body:
+            return body
+    return None
+
+
+def _free_attribute(cls: ast.ClassDef) -> str:
+    used = {
+        node.attr
+        for node in ast.walk(cls)
+        if isinstance(node, ast.Attribute)
+        and isinstance(node.value, ast.Name)
+        and node.value.id == "self"
+    }
+    for candidate in ("params", "typed_params", "genparams"):
+        if candidate not in used:
+            return candidate
+    return "genparams_params"
+
+
+def _drop_unused_imports(before: str, text: str) -> str:
+    """Imported names the patch took the last use of leave their import statements."""
+    try:
+        tree = ast.parse(text)
+        was_used = _used_names(ast.parse(before))
+    except SyntaxError:
+        return text
+    used = _used_names(tree)
+    source = _Source(text)
+    edits = []
+    for statement in tree.body:
+        if not isinstance(statement, (ast.Import, ast.ImportFrom)):
+            continue
+        if isinstance(statement, ast.ImportFrom) and statement.module == "__future__":
+            continue
+        kept = [
+            a
+            for a in statement.names
+            if (bound := a.asname or a.name.partition(".")[0]) in used or bound not in was_used
+        ]
+        span = source.line_span(statement)
+        if len(kept) == len(statement.names) or span is None:
+            continue
+        names = ", ".join(a.name + (f" as {a.asname}" if a.asname else "") for a in kept)
+        if not kept:
+            replacement = ""
+        elif isinstance(statement, ast.ImportFrom):
+            module = "." * statement.level + (statement.module or "")
+            replacement = f"from {module} import {names}\n"
+        else:
+            replacement = f"import {names}\n"
+        edits.append(_Edit(span[0], span[1], replacement))
+    return _apply(text, edits)
+
+
+def _used_names(tree: ast.Module) -> set[str]:
+    return {n.id for n in ast.walk(tree) if isinstance(n, ast.Name)}
+
+
+_MESSAGES = ("ParameterDescriptor", "FloatingPointRange", "IntegerRange")
+
+
+def _drop_unused_descriptors(text: str) -> str:
+    """``desc = ParameterDescriptor(...)`` (and ``desc.x = ...``) whose declaration went."""
+    try:
+        tree = ast.parse(text)
+    except SyntaxError:
+        return text
+    source = _Source(text)
+    edits = []
+    for function in ast.walk(tree):
+        if not isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            continue
+        setters = {
+            id(target.value): statement
+            for statement in ast.walk(function)
+            if isinstance(statement, ast.Assign)
+            for target in statement.targets
+            if isinstance(target, ast.Attribute) and isinstance(target.value, ast.Name)
+        }
+        loaded = {
+            n.id
+            for n in ast.walk(function)
+            if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load) and id(n) not in setters
+        }
+        for statement in ast.walk(function):
+            if not isinstance(statement, ast.Assign) or len(statement.targets) != 1:
+                continue
+            target = statement.targets[0]
+            value = statement.value
+            if (
+                isinstance(target, ast.Name)
+                and target.id not in loaded
+                and isinstance(value, ast.Call)
+                and _called(value) in _MESSAGES
+            ):
+                for dropped in [statement, *_sets_of(target.id, setters.values())]:
+                    span = source.line_span(dropped)
+                    if span is not None:
+                        edits.append(_Edit(span[0], span[1], ""))
+    return _apply(text, edits)
+
+
+def _sets_of(name: str, setters: Iterable[ast.Assign]) -> list[ast.Assign]:
+    return [
+        s
+        for s in setters
+        if any(
+            isinstance(t, ast.Attribute) and isinstance(t.value, ast.Name) and t.value.id == name
+            for t in s.targets
+        )
+    ]
+
+
+def _called(call: ast.Call) -> str:
+    func = call.func
+    return func.attr if isinstance(func, ast.Attribute) else getattr(func, "id", "")

@@ -1,0 +1,38 @@
+"""The node files of the import-rclpy tests: how to run the import on each, and how to
+run each one's own declaration code on a real node."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+NODES = Path(__file__).resolve().parent / "nodes"
+GOLDEN = Path(__file__).resolve().parent / "golden"
+
+
+@dataclass(frozen=True)
+class Case:
+    name: str  # golden files: <name>.yaml, <name>.stderr, <name>.diff
+    file: str  # under NODES
+    cls: str | None  # --class, and the class the real-node test instantiates
+    code: int  # expected exit code
+    declare: str | None = None  # a module function declaring on a given node, if no class
+
+    @property
+    def args(self) -> list[str]:
+        return [self.file, *(["--class", self.cls] if self.cls else [])]
+
+
+CASES = [
+    Case("camera_driver", "camera_driver.py", None, 0),
+    Case("key_teleop", "key_teleop.py", None, 0),
+    Case("legacy_bridge", "legacy_bridge.py", None, 1),
+    Case("serial_driver", "serial_driver.py", None, 0, declare="declare"),
+    Case("two_nodes_service", "two_nodes.py", "ServiceNode", 0),
+]
+CLASSES = {
+    "camera_driver": "CameraDriverNode",
+    "key_teleop": "KeyTeleop",
+    "legacy_bridge": "LegacyBridge",
+    "two_nodes_service": "ServiceNode",
+}

@@ -1,0 +1,206 @@
+"""`genparams import-rclpy`: golden schemas, warnings and patches; messages and exit codes.
+
+Update the golden files after an intended change: make golden (python -m tests.update_golden rclpy)
+"""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import yaml
+
+from genparams.cli import main
+from genparams.rclpy_import.values import RCLPY_ENUMS
+from tests.rclpy_import.cases import CASES, GOLDEN, NODES, Case
+
+
+def run(capsys: pytest.CaptureFixture[str], *args: str) -> tuple[int, str, str]:
+    code = main(["import-rclpy", *args])
+    captured = capsys.readouterr()
+    return code, captured.out, captured.err
+
+
+def outputs(case: Case, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> dict[str, str]:
+    """Schema, messages and patch of one case, run from the nodes' folder as a user would."""
+    schema = tmp_path / f"{case.name}.yaml"
+    code, out, err = run(capsys, *case.args, "-o", str(schema))
+    assert (code, out) == (case.code, ""), err
+    code, diff, patch_err = run(capsys, *case.args, "--patch")
+    assert code == case.code and patch_err.startswith(err.rstrip("\n").split("\n")[0])
+    return {".yaml": schema.read_text("utf-8"), ".stderr": err, ".diff": diff}
+
+
+@pytest.mark.parametrize("case", CASES, ids=lambda c: c.name)
+def test_import_matches_golden(
+    case: Case, tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(NODES)
+    for suffix, text in outputs(case, tmp_path, capsys).items():
+        assert text == (GOLDEN / f"{case.name}{suffix}").read_text("utf-8"), suffix
+
+
+def test_every_untranslatable_construct_is_a_warning_at_its_place(
+    capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    monkeypatch.chdir(NODES)
+    code, _, err = run(capsys, "legacy_bridge.py", "-o", str(tmp_path / "s.yaml"))
+    assert code == 1
+    lines = err.splitlines()
+    expected = {
+        "legacy_bridge.py:14:43: warning: allow_undeclared_parameters=True": "open groups",
+        "legacy_bridge.py:16:32: serial: warning: type-only": "optional parameter",
+        "legacy_bridge.py:20:17: port: warning: type-only": "optional parameter",
+        "legacy_bridge.py:24:32: anything: warning: dynamic_typing=True": "dynamic typing",
+        "legacy_bridge.py:25:32: home: warning: value computed": "environment",
+        "legacy_bridge.py:27:13: limit: warning: descriptor field description": "imported",
+        "legacy_bridge.py:30:13: retries: warning: integer_range on a double": "imported",
+        "legacy_bridge.py:35:36: fast_mode: warning: declared only under": "conditional",
+        "legacy_bridge.py:38:36: warning: one parameter per item": "per-item parameters",
+        "legacy_bridge.py:39:36: warning: one parameter per item": "computed from the item",
+        "legacy_bridge.py:46:9: warning: set_descriptor() changes a descriptor": "declared one",
+    }
+    for start, word in expected.items():
+        assert any(line.startswith(start) and word in line for line in lines), start
+    assert lines[-1] == "imported 5 of 12 parameters (2 approximately); 7 left out (see warnings)"
+    assert "one parameter per item of self.get_parameter('joints').value, its name computed" in err
+    written = yaml.safe_load((tmp_path / "s.yaml").read_text("utf-8"))
+    assert sorted(written["parameters"]) == ["baud", "joints", "limit", "rate", "retries"]
+
+
+def test_stdout_without_output(capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, err = run(capsys, str(NODES / "key_teleop.py"))
+    assert code == 0 and err.endswith("imported 9 of 9 parameters\n")
+    assert out == (GOLDEN / "key_teleop.yaml").read_text("utf-8")
+
+
+@pytest.mark.parametrize(
+    "text, message",
+    [
+        ("x = 1\ndef f(:\n", "cannot parse as Python"),
+        ("class A:\n  def f(self):\n    self.declare_parameter('a', 1)\n\x00", "cannot parse"),
+        (
+            "class A:\n  def f(self):\n    self.declare_parameter('a', " + "-" * 20000 + "1)\n",
+            "1:1: cannot parse as Python",
+        ),
+        ("import rclpy\n\nprint('no parameters here')\n", "1:1: no parameter declaration"),
+        (
+            "class N:\n    def __init__(self):\n"
+            "        super().__init__('n', automatically_declare_parameters_from_overrides=True)\n",
+            "3:31: no parameter declaration found: "
+            "automatically_declare_parameters_from_overrides=True",
+        ),
+    ],
+)
+def test_bad_input_exits_2_and_writes_nothing(
+    text: str, message: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = tmp_path / "node.py"
+    source.write_text(text, encoding="utf-8")
+    out_file = tmp_path / "out.yaml"
+    code, out, err = run(capsys, str(source), "-o", str(out_file))
+    assert (code, out, out_file.exists()) == (2, "", False)
+    assert err.startswith(f"{source}:") and message in err
+
+
+def test_several_classes_need_class(capsys: pytest.CaptureFixture[str]) -> None:
+    source = NODES / "two_nodes.py"
+    code, _, err = run(capsys, str(source))
+    assert code == 2
+    assert err == (
+        f"{source}:1:1: several parts declare parameters (ClientNode, ServiceNode): "
+        "pick a class with --class\n"
+    )
+    code, _, err = run(capsys, str(source), "--class", "Missing")
+    assert code == 2 and "no class Missing declaring parameters" in err
+    code, out, _ = run(capsys, str(source), "--class", "ClientNode")
+    assert code == 0 and "name: client\n" in out and "client_configure_introspection" in out
+
+
+def test_an_imported_schema_genparams_refuses_is_not_written(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = tmp_path / "node.py"
+    source.write_text(
+        "class N:\n    def __init__(self):\n"
+        "        self.declare_parameter('speed', 5.0, ParameterDescriptor("
+        "floating_point_range=[FloatingPointRange(from_value=0.0, to_value=1.0)]))\n",
+        encoding="utf-8",
+    )
+    out_file = tmp_path / "n.yaml"
+    code, _, err = run(capsys, str(source), "-o", str(out_file))
+    assert code == 2 and not out_file.exists()
+    assert "speed" in err and "the imported schema is not valid" in err
+
+
+def test_runs_as_a_command() -> None:
+    result = subprocess.run(
+        [sys.executable, "-m", "genparams", "import-rclpy", str(NODES / "camera_driver.py")],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert result.returncode == 0 and result.stdout.startswith("# genparams schema imported")
+
+
+def write_goldens() -> None:
+    import contextlib
+    import io
+    import tempfile
+
+    with contextlib.chdir(NODES), tempfile.TemporaryDirectory() as folder:
+        for case in CASES:
+            schema = Path(folder) / f"{case.name}.yaml"
+            err = io.StringIO()
+            with contextlib.redirect_stderr(err):
+                main(["import-rclpy", *case.args, "-o", str(schema)])
+            diff = io.StringIO()
+            with contextlib.redirect_stdout(diff), contextlib.redirect_stderr(io.StringIO()):
+                main(["import-rclpy", *case.args, "--patch"])
+            (GOLDEN / f"{case.name}.yaml").write_text(schema.read_text("utf-8"), "utf-8")
+            (GOLDEN / f"{case.name}.stderr").write_text(err.getvalue(), "utf-8")
+            (GOLDEN / f"{case.name}.diff").write_text(diff.getvalue(), "utf-8")
+
+
+if __name__ == "__main__":
+    write_goldens()
+
+
+def test_rclpy_enum_values_are_rclpy_s() -> None:
+    from rclpy import qos
+
+    for name, value in RCLPY_ENUMS.items():
+        enum, member = name.split(".")
+        assert getattr(getattr(qos, enum), member).value == value, name
+
+
+def test_a_statement_declaring_several_stays_whole_when_one_is_left_out(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    source = tmp_path / "mixed.py"
+    source.write_text(
+        "class M:\n"
+        "    def __init__(self):\n"
+        "        for n in ['a', 'bad-name']:\n"
+        "            self.declare_parameter(n, 1)\n"
+        "        self.declare_parameter('keep', 2)",  # no newline at the end
+        encoding="utf-8",
+    )
+    monkeypatch.chdir(tmp_path)
+    code, diff, err = run(capsys, "mixed.py", "--patch")
+    assert code == 1
+    assert (
+        "mixed.py:4:36: a: warning: declared by the same statement as a parameter left out" in err
+    )
+    assert "imported 1 of 3 parameters; 2 left out (see warnings)" in err
+    assert "-            self.declare_parameter(n, 1)" not in diff
+    assert diff.endswith(
+        "-        self.declare_parameter('keep', 2)\n\\ No newline at end of file\n"
+        "+        self.params = MParams.declare(self)\n"
+    )
+    if shutil.which("patch"):
+        subprocess.run(["patch", "-p0", "--quiet"], input=diff, text=True, check=True)
+        assert source.read_text("utf-8").endswith("        self.params = MParams.declare(self)\n")

@@ -1,0 +1,151 @@
+"""import-rclpy against real rclpy: each test node's own declaration code runs on a real
+node; the class generated from the imported schema, declared on a fresh node, must give
+the same parameters, descriptor by descriptor; the patched node must declare what the
+hand-written one did, and the patch must apply with `patch`."""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+import sys
+import types
+from pathlib import Path
+from typing import Any
+
+import pytest
+from rcl_interfaces.msg import ParameterDescriptor
+from rclpy.node import Node
+
+import genparams
+from genparams.outputs.schema_yaml import schema_yaml
+from genparams.rclpy_import.convert import APPROXIMATE, EXACT, LEFT_OUT
+from genparams.rclpy_import.node_file import ImportedNode, import_node
+from genparams.rclpy_import.patch import patched_source
+from genparams.runtime.naming import NODE_PARAMETERS, class_name, module_name
+from tests.rclpy_import.cases import CASES, CLASSES, GOLDEN, NODES, Case
+from tests.support import RosHarness, import_file, load_generated
+
+DESCRIPTOR_FIELDS = ("name", "type", "description", "additional_constraints", "read_only",
+                     "dynamic_typing")  # fmt: skip
+
+
+def imported(case: Case) -> ImportedNode:
+    text = (NODES / case.file).read_text("utf-8")
+    return import_node(text, str(NODES / case.file), case.cls)
+
+
+def hand_written(ros: RosHarness, case: Case, module: types.ModuleType) -> Node:
+    """A node running the case's own declaration code."""
+    if case.declare is not None:
+        node = ros.node()
+        getattr(module, case.declare)(node)
+        return node
+    return ros.add_node(getattr(module, CLASSES[case.name])(context=ros.context))
+
+
+def declared(node: Node) -> dict[str, tuple[tuple[Any, ...], Any]]:
+    """Every parameter the node's code declared: its descriptor as a tuple, and its value."""
+    names = [n for n in node.list_parameters([], 0).names if n not in NODE_PARAMETERS]
+    descriptors = node.describe_parameters(names)
+    # not get_parameter: it raises for a parameter declared by type only and never set
+    values = [node._parameters[n].value for n in names]
+    return {n: (_fields(d), _plain(v)) for n, d, v in zip(names, descriptors, values, strict=True)}
+
+
+def _fields(descriptor: ParameterDescriptor) -> tuple[Any, ...]:
+    ranges = tuple(
+        (kind, r.from_value, r.to_value, r.step)
+        for kind in ("floating_point_range", "integer_range")
+        for r in getattr(descriptor, kind)
+    )
+    return (*(getattr(descriptor, f) for f in DESCRIPTOR_FIELDS), ranges)
+
+
+def _plain(value: Any) -> Any:
+    return list(value) if isinstance(value, (list, tuple)) or hasattr(value, "tolist") else value
+
+
+def generated(node: ImportedNode, tmp_path: Path) -> types.ModuleType:
+    schema = tmp_path / f"{node.imported.name}.yaml"
+    schema.write_text(schema_yaml(node.imported.data), encoding="utf-8")
+    return load_generated(schema, tmp_path)
+
+
+@pytest.mark.parametrize("case", CASES, ids=lambda c: c.name)
+def test_generated_class_declares_what_the_node_declared(
+    case: Case, ros: RosHarness, tmp_path: Path
+) -> None:
+    result = imported(case)
+    hand = declared(hand_written(ros, case, import_file(NODES / case.file)))
+    params = getattr(generated(result, tmp_path), class_name(result.imported.name))
+    fresh = ros.node()
+    params.declare(fresh)
+    ours = declared(fresh)
+    kept = {f.name.value: o for f, o in result.imported.outcome if o != LEFT_OUT}
+    assert sorted(ours) == sorted(kept)
+    for name, outcome in kept.items():
+        (hand_descriptor, hand_value), (our_descriptor, our_value) = hand[name], ours[name]
+        assert our_value == hand_value, name
+        assert our_descriptor[:2] == hand_descriptor[:2], name  # name and type
+        if outcome == EXACT:
+            assert our_descriptor == hand_descriptor, name
+        else:  # the warning named what could not be kept
+            assert outcome == APPROXIMATE and our_descriptor != hand_descriptor, name
+
+
+def test_every_case_is_counted() -> None:
+    counts = {c.name: [o for _, o in imported(c).imported.outcome] for c in CASES}
+    tallies = {n: (o.count(EXACT), o.count(APPROXIMATE), o.count(LEFT_OUT)) for n, o in
+               counts.items()}  # fmt: skip
+    assert tallies == {
+        "camera_driver": (12, 0, 0),
+        "key_teleop": (9, 0, 0),
+        "legacy_bridge": (3, 2, 7),
+        "serial_driver": (2, 0, 0),
+        "two_nodes_service": (1, 0, 0),
+    }
+
+
+@pytest.mark.parametrize("case", [c for c in CASES if c.declare is None], ids=lambda c: c.name)
+def test_patched_node_declares_what_the_hand_written_one_did(
+    case: Case, ros: RosHarness, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    result = imported(case)
+    approximate = {f.name.value for f, o in result.imported.outcome if o == APPROXIMATE}
+    hand = declared(hand_written(ros, case, import_file(NODES / case.file)))
+    module = module_name(result.imported.name)
+    text = genparams.generate(f"{result.imported.name}.yaml", schema_yaml(result.imported.data))
+    (tmp_path / f"{module}.py").write_text(text, encoding="utf-8")
+    patched = tmp_path / case.file
+    patched.write_text(patched_source(result, str(NODES / case.file)), encoding="utf-8")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    monkeypatch.delitem(sys.modules, module, raising=False)
+    node = hand_written(ros, case, import_file(patched))
+    ours = declared(node)
+    assert sorted(ours) == sorted(hand)
+    for name in hand:
+        if name not in approximate:
+            assert ours[name] == hand[name], name
+    lint = subprocess.run(
+        [sys.executable, "-m", "ruff", "check", "--isolated", "--select", "F,E9", str(patched)],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert lint.returncode == 0, lint.stdout
+
+
+@pytest.mark.skipif(shutil.which("patch") is None, reason="needs the patch tool")
+@pytest.mark.parametrize("case", CASES, ids=lambda c: c.name)
+def test_the_diff_applies_with_patch(case: Case, tmp_path: Path) -> None:
+    shutil.copy(NODES / case.file, tmp_path / case.file)
+    diff = (GOLDEN / f"{case.name}.diff").read_text("utf-8")
+    if not diff:  # declarations outside a class are left as they are
+        return
+    applied = subprocess.run(
+        ["patch", "-p0", "--quiet"], input=diff, cwd=tmp_path, text=True, check=False,
+        capture_output=True,
+    )  # fmt: skip
+    assert applied.returncode == 0, applied.stdout + applied.stderr
+    expected = patched_source(imported(case), str(NODES / case.file))
+    assert (tmp_path / case.file).read_text("utf-8") == expected
