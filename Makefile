@@ -7,7 +7,7 @@ PYTHON := $(VENV)/bin/python
 EXAMPLE := examples/camera_node
 
 
-.PHONY: venv lock test-latest browser demo demo-arm tour test check lint typecheck golden docs bench bench-quick bench-profile mutate mutate-sample clean
+.PHONY: venv lock test-latest browser demo demo-arm tour test check lint typecheck golden screenshots docs bench bench-quick bench-profile mutate mutate-sample clean
 
 # The development environment installs from requirements/dev.lock (every pin with its
 # hashes, from PyPI only); uv itself comes from requirements/uv.lock. genparams goes in
@@ -78,6 +78,12 @@ typecheck: venv
 ## Rewrite the golden files (generated modules, bad-schema errors, docs, check-params reports) after an intended change of output.
 golden: venv
 	$(PYTHON) -m tests.update_golden
+
+## Refresh docs/images/tune.png on purpose: the tuning page on the camera example, in Chromium
+## (tests/tune/test_tune_page.py takes it; any other run writes it to a temporary folder).
+screenshots: venv browser
+	GENPARAMS_SCREENSHOTS="$(CURDIR)/docs/images" $(PYTHON) -m pytest -q -p no:cacheprovider \
+		tests/tune/test_tune_page.py -k test_screenshot_for_the_docs
 
 ## The documentation site from docs/ (Sphinx + MyST) into build/docs/html; any warning fails.
 docs: venv
