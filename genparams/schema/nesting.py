@@ -33,7 +33,8 @@ _BLOCK_PLAIN_END = re.compile(r":(?=\s|\Z)|[ \t]#|[\r\n]|\Z")
 _WORD = r"(?:[^\s,?\[\]{}:]+|:(?![\s,\[\]{}]|\Z))"
 _FLOW_PLAIN = rf"[^\s,?\[\]{{}}:'\"#!&*]{_WORD}*(?:\s+(?!#){_WORD}+)*+"
 _FLOW_RUN = re.compile(rf"(?:\s+|[,?:]|{_FLOW_PLAIN})*+")
-_PROPERTY = re.compile(r"[^\s,\[\]{}]*")
+# A tag runs to a space or a flow indicator; an anchor or alias name is letters, digits, _ -.
+_PROPERTY = re.compile(r"![^\s,\[\]{}]*|[&*][0-9A-Za-z_-]*")
 _QUOTED = {
     '"': re.compile(r'"[^"\\]*(?:\\.[^"\\]*)*"', re.DOTALL),
     "'": re.compile(r"'[^']*(?:''[^']*)*'"),
@@ -81,7 +82,10 @@ class _Reader:
                     pos = self._next_line(first)
                     continue
                 block_scalar = None
-            if plain_open and not blank:
+            if blank:  # a plain scalar runs on over blank lines
+                pos = self._next_line(first)
+                continue
+            if plain_open:
                 plain_open = text[first] != "#" and column > self._indent()
                 if plain_open and not (column == 0 and self._document_marker(first)):
                     pos = self._next_line(first)
