@@ -62,7 +62,7 @@ demo-arm: venv
 tour: venv
 	$(PYTHON) examples/motion/tour.py $(PART)
 
-## Lint, type-check (package, examples and generated code) and run every test.
+## Lint, type-check (package, tests, examples and generated code) and run every test.
 test: venv browser lint typecheck
 	$(PYTHON) -m pytest -q
 
@@ -72,7 +72,7 @@ lint: venv
 	$(VENV)/bin/lint-imports
 
 typecheck: venv
-	$(PYTHON) -m mypy genparams bench
+	$(PYTHON) -m mypy genparams bench tests
 	cd $(EXAMPLE) && ../../$(PYTHON) -m mypy --config-file ../../pyproject.toml camera_node demo.py
 
 ## Rewrite the golden files (generated modules, bad-schema errors, docs, check-params reports) after an intended change of output.

@@ -10,6 +10,7 @@ from __future__ import annotations
 import sys
 import tempfile
 from pathlib import Path
+from typing import Any
 
 import rclpy
 from rcl_interfaces.msg import FloatingPointRange, IntegerRange, ParameterDescriptor
@@ -39,7 +40,7 @@ def wide_schema(count: int) -> str:
     return "\n".join(lines) + "\n"
 
 
-def params_class(kind: str, workdir: Path) -> type:
+def params_class(kind: str, workdir: Path) -> type[Any]:
     if kind.startswith("wide"):
         text = genparams.generate(workdir / "wide.yaml", wide_schema(int(kind[4:] or 1000)))
     else:

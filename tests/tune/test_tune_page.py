@@ -230,7 +230,10 @@ def test_read_only_page_and_token(page: Page, server: TuneServer) -> None:
         open_node(page, viewer, CAM)
         expect(control(page, CAM, "camera.encoding")).to_be_disabled()
         expect(page.locator("#mode")).to_be_visible()
-        body = {"node": CAM, "params": [{"name": "camera.fps", "type": "double", "value": 5}]}
+        body: dict[str, object] = {
+            "node": CAM,
+            "params": [{"name": "camera.fps", "type": "double", "value": 5}],
+        }
         assert post(viewer.url + "api/set", body) == 403
         guarded.start()
         assert guarded.url.endswith("/?token=s3cret")
