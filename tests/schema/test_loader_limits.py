@@ -5,6 +5,7 @@ from __future__ import annotations
 import pytest
 import yaml
 
+from genparams.paramsfile.params_reader import read_params_file
 from genparams.schema import loader
 from genparams.schema.errors import SchemaError
 from genparams.schema.loader import MAX_DEPTH, MAX_NODES, compose_yaml
@@ -80,3 +81,9 @@ def test_brackets_inside_scalars_and_comments_are_not_depth(text: str) -> None:
     document, problems = compose_yaml(text, "f.yaml")
     assert problems == []
     assert document.data == yaml.safe_load(text)
+
+
+def test_a_deep_params_file_is_one_located_problem() -> None:
+    text = "/**:\n  ros__parameters:\n    x: " + "[" * 100_000 + "\n"
+    problems = read_params_file(text, "p.yaml").problems
+    assert [str(p) for p in problems] == [f"p.yaml:3:69: nested deeper than {MAX_DEPTH} levels"]
