@@ -7,7 +7,7 @@ PYTHON := $(VENV)/bin/python
 EXAMPLE := examples/camera_node
 
 
-.PHONY: venv lock test-latest browser demo import-node-demo demo-arm tour test check lint typecheck golden docs bench bench-quick bench-profile mutate mutate-sample clean
+.PHONY: venv lock test-latest browser demo import-node-demo demo-arm tour test check lint typecheck golden screenshots docs bench bench-quick bench-profile mutate mutate-sample clean
 
 # The development environment installs from requirements/dev.lock (every pin with its
 # hashes, from PyPI only); uv itself comes from requirements/uv.lock. genparams goes in
@@ -68,7 +68,7 @@ import-node-demo: venv
 	node=$$!; $(VENV)/bin/genparams import-node /hand_written_driver --timeout 30; \
 	code=$$?; kill $$node; exit $$code
 
-## Lint, type-check (package, examples and generated code) and run every test.
+## Lint, type-check (package, tests, examples and generated code) and run every test.
 test: venv browser lint typecheck
 	$(PYTHON) -m pytest -q
 
@@ -78,12 +78,18 @@ lint: venv
 	$(VENV)/bin/lint-imports
 
 typecheck: venv
-	$(PYTHON) -m mypy genparams bench
+	$(PYTHON) -m mypy genparams bench tests
 	cd $(EXAMPLE) && ../../$(PYTHON) -m mypy --config-file ../../pyproject.toml camera_node demo.py
 
 ## Rewrite the golden files (generated modules, bad-schema errors, docs, check-params reports) after an intended change of output.
 golden: venv
 	$(PYTHON) -m tests.update_golden
+
+## Refresh docs/images/tune.png on purpose: the tuning page on the camera example, in Chromium
+## (tests/tune/test_tune_page.py takes it; any other run writes it to a temporary folder).
+screenshots: venv browser
+	GENPARAMS_SCREENSHOTS="$(CURDIR)/docs/images" $(PYTHON) -m pytest -q -p no:cacheprovider \
+		tests/tune/test_tune_page.py -k test_screenshot_for_the_docs
 
 ## The documentation site from docs/ (Sphinx + MyST) into build/docs/html; any warning fails.
 docs: venv

@@ -48,7 +48,7 @@ YAML_TOKENS = (
     ".inf", "-.nan", "0x1F", "0o17", "1e400", "1_000", "9223372036854775808",
     "-9223372036854775809", "1" * 400, "2001-12-14", "=", "\\u0000", "\\ud800", "\ufeff",
 )  # fmt: skip
-INTERESTING_VALUES = (
+INTERESTING_VALUES: tuple[object, ...] = (
     None, True, False, 0, -1, 2**63 - 1, 2**63, -(2**63) - 1, 2**64, 10**400, -(10**400),
     0.0, -0.0, 1e308, 5e-324, float("inf"), float("-inf"), float("nan"), "", " ",
     "x" * 300, [], {}, [[]], [1, "a"], {"min": 5, "max": 1}, {"min": 0, "max": 10, "step": 0.0},

@@ -135,9 +135,9 @@ def update() -> None:
         case.folder.mkdir(exist_ok=True)
         for kind, text in outputs(case).items():
             case.golden(kind).write_text(text, encoding="utf-8")
-    for case in check_params_cases():
-        _code, text = check_params_output(case)
-        (case / "expected.txt").write_text(text, encoding="utf-8")
+    for folder in check_params_cases():
+        _code, text = check_params_output(folder)
+        (folder / "expected.txt").write_text(text, encoding="utf-8")
 
 
 def case_dirs() -> list[Path]:

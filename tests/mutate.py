@@ -404,7 +404,7 @@ def _record(name: str, code: int) -> None:
     module = next(m for m in all_modules() if name.startswith(m + "."))
     meta_path = MUTANTS / (module.replace(".", "/") + ".py.meta")
     meta = _meta(module)
-    meta.setdefault("exit_code_by_key", {})[name] = code  # type: ignore[index]
+    meta.setdefault("exit_code_by_key", {})[name] = code
     meta_path.write_text(json.dumps(meta), encoding="utf-8")
 
 

@@ -113,7 +113,7 @@ def python_attribute(name: str) -> str:
 def texts(max_size: int = 30) -> st.SearchStrategy[str]:
     """Any text ROS can carry (UTF-8, no NUL), with hostile fragments mixed in."""
     plain = st.text(
-        st.characters(exclude_categories=("Cs",), exclude_characters="\x00"), max_size=max_size
+        st.characters(exclude_categories=["Cs"], exclude_characters="\x00"), max_size=max_size
     )
     return st.one_of(
         plain,

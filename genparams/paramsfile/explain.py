@@ -31,7 +31,8 @@ from genparams.paramsfile.section_checker import SectionChecker
 from genparams.runtime.naming import is_ros_token, join_prefix
 from genparams.runtime.spec import CompiledParam
 from genparams.runtime.types import ValueTypeError
-from genparams.schema.errors import Location
+from genparams.schema.errors import Location, SchemaError
+from genparams.schema.nesting import check_nesting
 
 OVERRIDE_FILE = "-p"  # the file name of -p rules' locations: line = the rule's place among them
 
@@ -104,7 +105,10 @@ def _split_rule(rule: str) -> tuple[str, str]:
 def _rule_value(text: str, rule: str) -> Any:
     """rcl reads a -p value with its params-file rules: a scalar, or a flat list."""
     try:
+        check_nesting(text, "-p")  # before composing, which recurses
         node = yaml.compose(text, Loader=yaml.SafeLoader)
+    except SchemaError as exc:
+        raise RuleError(f"-p {rule!r}: {exc.problems[0].message}") from exc
     except yaml.YAMLError as exc:
         raise RuleError(f"-p {rule!r}: not a YAML value ({exc.__class__.__name__})") from exc
     if isinstance(node, yaml.ScalarNode):

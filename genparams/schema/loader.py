@@ -19,13 +19,14 @@ import yaml
 
 from genparams.runtime.types import ros_text_problem
 from genparams.schema.errors import Location, SchemaError, SchemaProblem
+from genparams.schema.nesting import MAX_DEPTH as MAX_DEPTH
+from genparams.schema.nesting import check_nesting
 
 Path = tuple[str | int, ...]
 
 # Limits that keep hostile input cheap: a 2 MB schema (some 20,000 parameters) loads
 # in seconds; anything beyond fails at once, before it is built.
 MAX_NODES = 250_000
-MAX_DEPTH = 64
 MAX_BYTES = 2_000_000
 
 _BaseLoader: type[yaml.SafeLoader] = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
@@ -115,7 +116,8 @@ def _compose(
     text: str, file: str, scalar: ScalarReader | None
 ) -> tuple[LoadedDocument, list[SchemaProblem]]:
     try:
-        _check_nesting(text, file)
+        check_nesting(text, file)
+        _count_nodes(text, file)
         root = yaml.compose(text, Loader=_SafeLoader)
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
@@ -138,31 +140,15 @@ def _compose(
     return document, builder.problems
 
 
-def _check_nesting(text: str, file: str) -> None:
-    """Reject deep nesting before composing: libyaml's composer recurses in C and would
-    crash the process on ``[[[[...`` thousands deep. Its parser, used here, does not."""
-    depth = nodes = 0
+def _count_nodes(text: str, file: str) -> None:
+    """Refuse too many values before composing, from the parser's events (the depth was
+    read from the text already: composers recurse, and libyaml's recursed in C)."""
+    nodes = 0
     for event in yaml.parse(text, Loader=_SafeLoader):
         if isinstance(event, (yaml.ScalarEvent, yaml.CollectionStartEvent)):
             nodes += 1
             if nodes > MAX_NODES:
                 raise _too_many_nodes(file, event.start_mark)
-        if isinstance(event, yaml.CollectionStartEvent):
-            depth += 1
-            if depth > MAX_DEPTH:
-                mark = event.start_mark
-                line, column = (mark.line + 1, mark.column + 1) if mark else (1, 1)
-                raise SchemaError(
-                    [
-                        SchemaProblem(
-                            Location(file, line, column),
-                            "",
-                            f"nested deeper than {MAX_DEPTH} levels",
-                        )
-                    ]
-                )
-        elif isinstance(event, yaml.CollectionEndEvent):
-            depth -= 1
 
 
 def _too_many_nodes(file: str, mark: Any) -> SchemaError:
@@ -223,7 +209,7 @@ class _Builder:
 
     def build(self, node: yaml.Node, path: Path) -> Any:
         # No node count here: _check_expansion has bounded what aliases expand to. Depth
-        # is checked again: _check_nesting saw the text, where an alias of a deep
+        # is checked again: check_nesting saw the text, where an alias of a deep
         # collection placed deep adds the depths of both.
         if len(path) > MAX_DEPTH:
             raise SchemaError(

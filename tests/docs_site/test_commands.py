@@ -10,6 +10,7 @@ command is a temporary folder.
 from __future__ import annotations
 
 import re
+import shlex
 import shutil
 import subprocess
 import sys
@@ -57,7 +58,7 @@ def workspace(tmp_path: Path) -> Path:
 @pytest.mark.parametrize("block", cases())
 def test_shown_commands_run(block: Block, workspace: Path) -> None:
     out = workspace.parent / "out"
-    genparams = f"{sys.executable} -m genparams"
+    genparams = f"{shlex.quote(sys.executable)} -m genparams"
     cwd = workspace
     for line in shell_lines(block.body):
         if line.startswith("cd "):
@@ -67,7 +68,9 @@ def test_shown_commands_run(block: Block, workspace: Path) -> None:
             cwd = cwd / folder.strip()
         if not _GENPARAMS.search(line):
             continue
-        command = _GENPARAMS.sub(genparams, line).replace("/tmp/", f"{out}/")
+        # /tmp/ first, so a /tmp/ in the interpreter's own path stays as it is.
+        command = line.replace("/tmp/", shlex.quote(f"{out}/"))
+        command = _GENPARAMS.sub(lambda _: genparams, command)
         result = subprocess.run(
             command, shell=True, cwd=cwd, capture_output=True, text=True, timeout=60, check=False
         )

@@ -133,7 +133,7 @@ def test_params_file_section_loads_with_equal_values(
         assert descriptor.read_only == bool(leaf.get("read_only", False)), name
         bounds = (leaf.get("validation") or {}).get("bounds<>")
         if bounds is not None and not leaf["type"].endswith("array"):
-            (ros_range,) = [*descriptor.floating_point_range, *descriptor.integer_range]
+            (ros_range,) = list(descriptor.floating_point_range) + list(descriptor.integer_range)
             assert (ros_range.from_value, ros_range.to_value) == tuple(bounds), name
     checked = 0
     for name, value in values_for(section).items():

@@ -134,8 +134,8 @@ def test_ament_python_generates_at_build_time(
         assert "fingers" in rejected.reason
 
     # An edited schema reaches the install space with the next build.
-    schema = workspace / "src" / "lidar_filter" / "config" / "lidar_filter.yaml"
-    schema.write_text(schema.read_text().replace("default: 0.1", "default: 0.25"))
+    edited = workspace / "src" / "lidar_filter" / "config" / "lidar_filter.yaml"
+    edited.write_text(edited.read_text().replace("default: 0.1", "default: 0.25"))
     colcon_build(workspace, *options)
     rebuilt = installed_python(
         workspace,

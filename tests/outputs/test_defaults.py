@@ -167,6 +167,8 @@ def test_strings_are_read_back_as_the_same_string(value: str) -> None:
     import yaml
 
     text = string_text(value)
-    node = yaml.compose(f"k: {text}\n").value[0][1]
+    document = yaml.compose(f"k: {text}\n")
+    assert document is not None
+    node = document.value[0][1]
     assert ros_scalar(node.value, node.style) == value
     assert yaml.safe_load(f"k: {text}\n") == {"k": value}

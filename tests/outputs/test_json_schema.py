@@ -29,7 +29,7 @@ def _validator(schema_path: Path, *, partial: bool = False) -> jsonschema.Draft2
 def _errors(validator: jsonschema.Draft202012Validator, text: str) -> list[tuple[str, str]]:
     data = yaml.safe_load(text)
     return sorted(
-        (".".join(str(p) for p in error.absolute_path), error.validator)  # type: ignore[misc]
+        (".".join(str(p) for p in error.absolute_path), error.validator)
         for error in validator.iter_errors(data)
     )
 

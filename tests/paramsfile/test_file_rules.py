@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import pytest
 
 from genparams.api import load_schema
@@ -25,9 +27,7 @@ rules:
 BROKEN = "rule 'speed_order' broken: min_speed <= max_speed is false for min_speed=3.0"
 
 
-def _report(
-    entries: list[str], nodes: list[str] | None = None, section: str = "/drive"
-) -> list[str]:
+def _report(entries: list[str], nodes: Sequence[str] = (), section: str = "/drive") -> list[str]:
     text = f"{section}:\n  ros__parameters:\n" + "".join(f"    {e}\n" for e in entries)
     report = check_params(DRIVE, read_params_file(text, "p.yaml"), nodes)
     return [str(p) for p in (*report.problems, *report.warnings, *report.skipped)]

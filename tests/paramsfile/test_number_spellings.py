@@ -65,6 +65,7 @@ def _same(a: object, b: object) -> bool:
 @pytest.mark.parametrize(("text", "value"), SPELLINGS)
 def test_number_spellings_read_as_strtod_reads_them(text: str, value: ScalarValue) -> None:
     node = yaml.compose(f"p: {text}\n")
+    assert node is not None
     scalar = node.value[0][1]
     assert _same(ros_scalar(scalar.value, scalar.style), value)
 

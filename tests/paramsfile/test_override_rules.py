@@ -114,6 +114,15 @@ def test_a_rule_rcl_refuses_is_named(
     assert err == f"genparams explain: -p {rule!r}: {message}\n"
 
 
+def test_a_deep_rule_value_is_refused_before_it_is_composed(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    rule = "fps:=" + "[" * 100_000 + "]" * 100_000
+    code, out, err = run(capsys, "/cam", "-p", rule)
+    assert (code, out) == (2, [])
+    assert err.endswith(": nested deeper than 64 levels\n")
+
+
 def test_rules_given_together_are_numbered_from_one() -> None:
     bound = Bound(load_schema("cam.yaml", CAMERA), "")
     explanation = explain([bound], [overrides_document(["label:=x", "cam:fps:=2.0"])], "/cam")

@@ -87,6 +87,7 @@ def test_scalars_are_typed_as_ros_types_them(ros: RosHarness, tmp_path: Path) ->
     text = "/**:\n  ros__parameters:\n" + "\n".join(lines) + "\n"
     seen = _overrides(ros, tmp_path, text, "scalars", "/")
     nodes = yaml.compose(text)
+    assert nodes is not None
     params = nodes.value[0][1].value[0][1].value
     for index, (_key, value_node) in enumerate(params):
         ours = ros_scalar(value_node.value, value_node.style)

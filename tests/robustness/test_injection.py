@@ -72,7 +72,7 @@ def test_hostile_text_round_trips_exactly(ros: RosHarness, tmp_path: Path) -> No
     cls = params_class(import_file(module_path))
     node = ros.node()
     cfg = cls.declare(node)
-    expected = {}
+    expected: dict[str, object] = {}
     for index, payload in enumerate(texts):
         expected[f"p{index}"] = payload
         expected[f"a{index}"] = (payload, "#")
@@ -98,7 +98,7 @@ def test_nul_is_a_schema_error_wherever_it_is(field: str) -> None:
         genparams.generate("nul.yaml", f"genparams: 1\nname: n\nparameters:\n  x: {leaf}\n")
 
 
-KEYWORDS = [k for k in keyword.kwlist + keyword.softkwlist if k.isidentifier() and k != "_"]
+KEYWORDS = [k for k in [*keyword.kwlist, *keyword.softkwlist] if k.isidentifier() and k != "_"]
 BUILTINS = ["print", "list", "dict", "type", "id", "len", "object", "property", "range", "super"]
 BUILTINS += ["open", "exec", "eval", "compile", "globals", "self", "cls", "os", "sys"]
 API = ["snapshot", "declare", "defaults", "on_change", "to_dict", "remote", "changes"]

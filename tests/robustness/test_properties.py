@@ -141,6 +141,6 @@ def test_generated_modules_pass_mypy_strict_and_ruff(tmp_path: Path) -> None:
     ]
     for argv in checks:
         result = subprocess.run(
-            [sys.executable, "-m", *argv], capture_output=True, text=True, timeout=300
+            [sys.executable, "-m", *argv], cwd=tmp_path, capture_output=True, text=True, timeout=300
         )
         assert result.returncode == 0, f"{argv[0]} in {tmp_path}:\n{result.stdout}{result.stderr}"

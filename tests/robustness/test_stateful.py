@@ -119,7 +119,7 @@ def rules_hold(state: dict[str, Any]) -> bool:
     return all(holds(state) for holds in CROSS_RULES.values())
 
 
-text = st.text(st.characters(exclude_categories=("Cs",), exclude_characters="\x00"), max_size=14)
+text = st.text(st.characters(exclude_categories=["Cs"], exclude_characters="\x00"), max_size=14)
 doubles = st.one_of(
     st.floats(-20.0, 140.0),
     st.integers(-4, 260).map(lambda k: k * 0.5),

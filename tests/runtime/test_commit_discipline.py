@@ -64,7 +64,9 @@ class CommitMachine(RuleBasedStateMachine):
     def __init__(self) -> None:
         super().__init__()
         self.node: Node = self.harness.node()
-        self.views = {p: cls.declare(self.node, prefix=p) for p, cls in self.classes.items()}
+        self.views: dict[str, Any] = {
+            p: cls.declare(self.node, prefix=p) for p, cls in self.classes.items()
+        }
         self.replayed = {name: self.node.get_parameter(name).value for name in NAMES}
         self.observed: list[dict[str, int]] = []
         for prefix, view in self.views.items():

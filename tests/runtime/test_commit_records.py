@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Any
 
 from rclpy.parameter import Parameter
 
@@ -17,7 +18,7 @@ def test_late_subscriber_sees_old_and_new_values(ros: RosHarness, tmp_path: Path
     node = ros.node(args=["-p", "serial:=ABCD1234"])
     cfg = module.CameraDriverParams.declare(node)
     node.set_parameters([Parameter("camera.fps", value=10.0)])  # nobody listening yet
-    seen: list[Changes[object]] = []
+    seen: list[Changes[Any]] = []
     unsubscribe = cfg.on_change(seen.append)
     node.set_parameters([Parameter("camera.fps", value=20.0)])
     assert len(seen) == 1

@@ -8,6 +8,7 @@ second keeps its previous entries and takes the new keys, as the node stored the
 from __future__ import annotations
 
 import types
+from typing import Any
 
 import pytest
 from rcl_interfaces.msg import SetParametersResult
@@ -53,7 +54,7 @@ def test_keys_change_and_entries_keep_their_shape(
     node = ros.node()
     outer = outer_module.OuterParams.declare(node)
     inner = inner_module.InnerParams.declare(node, "gains")
-    seen: list[Changes] = []
+    seen: list[Changes[Any]] = []
     inner.on_change(seen.append)
     before = inner.snapshot()
 

@@ -8,7 +8,7 @@ import threading
 import types
 import uuid
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
 import pytest
 from rcl_interfaces.msg import SetParametersResult
@@ -84,7 +84,7 @@ def test_one_group_per_key_read_through_a_mapping(ros: RosHarness, arm: types.Mo
     assert (p.description, p.additional_constraints) == ("Proportional.", "must be >= 0.0")
     assert max_.floating_point_range[0].to_value == 5.0
     with pytest.raises(TypeError):
-        cfg.gains["wrist"] = cfg.gains["elbow"]
+        cast(Any, cfg.gains)["wrist"] = cfg.gains["elbow"]  # what its type already forbids
     with pytest.raises(AttributeError, match="read-only"):
         cfg.gains["elbow"].p = 2.0
     assert cfg.to_dict()["gains"]["elbow"]["tips"] == {"thumb": {"force": 0.5}}
@@ -100,7 +100,7 @@ def test_map_grows_and_shrinks_through_services(
     cfg = arm.ArmParams.declare(node)
     client = ros.client(node)
     before = cfg.snapshot()
-    seen: list[Changes[object]] = []
+    seen: list[Changes[Any]] = []
     cfg.on_change(seen.append)
 
     (result,) = client.set(Parameter("joints", value=["shoulder", "wrist"]))

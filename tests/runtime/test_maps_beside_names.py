@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import types
+from typing import Any
 
 import pytest
 from rclpy.parameter import Parameter
@@ -73,7 +74,7 @@ def test_a_set_reaches_the_live_view_and_the_change_record(
 ) -> None:
     node = ros.node()
     cfg = beside.BesideParams.declare(node)
-    seen: list[Changes] = []
+    seen: list[Changes[Any]] = []
     cfg.on_change(seen.append)
     old = read(cfg)  # type: ignore[operator]
     result = node.set_parameters([Parameter(name, value=value)])[0]

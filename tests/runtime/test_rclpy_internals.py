@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import importlib.metadata
 import inspect
+from collections.abc import Sequence
 
 from rcl_interfaces.msg import IntegerRange, ParameterDescriptor, SetParametersResult
 from rclpy.exceptions import ParameterNotDeclaredException
@@ -80,7 +81,7 @@ def test_shadowed_set_path_and_post_set_caller_see_every_set(ros: RosHarness) ->
         calls.append(f"set:{[p.name for p in parameter_list]}:{descriptors is not None}")
         return unlocked(parameter_list, descriptors, allow_not_set_type)
 
-    def post_set(parameters: list[Parameter]) -> None:
+    def post_set(parameters: Sequence[Parameter]) -> None:
         calls.append("post")
         run_post_set(parameters)
 
@@ -115,9 +116,12 @@ def test_undeclare_runs_no_callback_and_can_be_shadowed(ros: RosHarness) -> None
     node = ros.node()
     node.declare_parameter("gone", 1)
     called: list[object] = []
-    node.add_on_set_parameters_callback(
-        lambda p: called.append(p) or SetParametersResult(successful=True)
-    )
+
+    def record(parameters: list[Parameter]) -> SetParametersResult:
+        called.append(parameters)
+        return SetParametersResult(successful=True)
+
+    node.add_on_set_parameters_callback(record)
     refused: list[str] = []
     original = internals.replace_undeclare(node, refused.append)
     node.undeclare_parameter("gone")
@@ -130,7 +134,8 @@ def test_overrides_and_lifecycle_state(ros: RosHarness) -> None:
     node = ros.node(args=["-p", "speed:=2.5"])
     assert internals.parameter_overrides(node)["speed"].value == 2.5
     assert internals.lifecycle_state(node) is None
-    managed = ros.add_node(LifecycleNode(unique_name("managed"), context=ros.context))
+    managed = LifecycleNode(unique_name("managed"), context=ros.context)
+    ros.add_node(managed)
     assert internals.lifecycle_state(managed) == "unconfigured"
     managed.trigger_configure()
     assert internals.lifecycle_state(managed) == "inactive"

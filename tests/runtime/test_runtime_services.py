@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import types
 from pathlib import Path
+from typing import Any
 
 import pytest
 from rcl_interfaces.msg import SetParametersResult
@@ -134,7 +135,7 @@ def test_on_change_reports_old_and_new_and_ignores_foreign_parameters(
     node = ros.node(args=SERIAL)
     node.declare_parameter("unrelated", 1)
     cfg = module.CameraDriverParams.declare(node)
-    seen: list[Changes[object]] = []
+    seen: list[Changes[Any]] = []
     cfg.on_change(seen.append)
     node.set_parameters([Parameter("unrelated", value=2)])
     node.set_parameters([Parameter("use_sim_time", value=True)])

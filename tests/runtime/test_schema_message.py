@@ -71,8 +71,11 @@ class Listener:
         self.texts: list[str] = []
         topic = node.get_fully_qualified_name() + SCHEMA_TOPIC_SUFFIX
         self.subscription = ros.client_node.create_subscription(
-            String, topic, lambda m: self.texts.append(m.data), LATCHED
+            String, topic, self._received, LATCHED
         )
+
+    def _received(self, message: String) -> None:
+        self.texts.append(message.data)
 
     def wait_for(self, count: int, timeout: float = 10.0) -> list[str]:
         deadline = time.monotonic() + timeout

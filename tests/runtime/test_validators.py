@@ -20,6 +20,7 @@ from genparams.runtime.validators import (
     RosRange,
     SubsetOf,
     Unique,
+    Validator,
     first_failure,
 )
 
@@ -116,7 +117,8 @@ def test_pattern_on_strings_and_items() -> None:
     assert pattern("ab1") == "must match '^[a-z]+$' (pattern), got 'ab1'"
     assert pattern(["ok", "NO"]) == "item 1 must match '^[a-z]+$' (pattern), got 'NO'"
     assert pattern.describe() == "matches '^[a-z]+$'"
-    assert pattern("x" * 100 + "1").endswith(", got '" + "x" * 56 + "...")  # cut at 60
+    long = pattern("x" * 100 + "1")
+    assert long is not None and long.endswith(", got '" + "x" * 56 + "...")  # cut at 60
 
 
 def test_custom_outcomes() -> None:
@@ -137,7 +139,7 @@ def test_custom_outcomes() -> None:
 
 
 def test_first_failure_is_the_first_in_order() -> None:
-    validators = [Compare("ge", 0), Compare("le", 10), OneOf((1, 2))]
+    validators: list[Validator] = [Compare("ge", 0), Compare("le", 10), OneOf((1, 2))]
     assert first_failure(validators, 11) == "must be <= 10 (le), got 11"
     assert first_failure(validators, -1) == "must be >= 0 (ge), got -1"
     assert first_failure(validators, 2) is None

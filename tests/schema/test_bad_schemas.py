@@ -119,7 +119,7 @@ HEAD = "genparams: 1\nname: big\nparameters:\n"
 
 def hostile_inputs(folder: Path) -> dict[str, tuple[Path, str]]:
     """Name -> (file, expected start of the error), written at test time (too big to commit)."""
-    files = {
+    files: dict[str, tuple[Path | str, str]] = {
         "alias bomb": (SCHEMAS[0].parent / "yaml_alias_bomb.yaml", "an alias bomb"),
         "flow nesting 100000 deep": (
             HEAD + "  x: " + "[" * 100_000 + "]" * 100_000 + "\n",

@@ -7,7 +7,8 @@ import re
 
 import jsonschema
 
-from genparams.outputs.json_schema import ENTRY_KEY_PATTERN, NODE_KEY_PATTERN
+from genparams.outputs.json_schema import NODE_KEY_PATTERN
+from genparams.outputs.schema_paths import ENTRY_KEY_PATTERN
 from genparams.runtime import naming
 from genparams.schema.resources import resource_dir
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 import sys
 import tempfile
 from pathlib import Path
+from typing import Any
 
 import rclpy
 from rcl_interfaces.msg import FloatingPointRange, IntegerRange, ParameterDescriptor
@@ -76,7 +77,7 @@ def schema_text(kind: str, workdir: Path) -> tuple[Path, str] | None:
     return None
 
 
-def params_class(kind: str, workdir: Path) -> type:
+def params_class(kind: str, workdir: Path) -> type[Any]:
     written = schema_text(kind, workdir)
     if written is not None:
         text = genparams.generate(*written)

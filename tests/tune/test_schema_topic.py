@@ -20,9 +20,11 @@ def latest_schema(ros: RosHarness, node: Node) -> dict[str, Any]:
     """Subscribe late, as a tool would: the transient-local message still arrives."""
     received: list[str] = []
     topic = node.get_fully_qualified_name() + SCHEMA_TOPIC_SUFFIX
-    subscription = ros.client_node.create_subscription(
-        String, topic, lambda m: received.append(m.data), SCHEMA_QOS
-    )
+
+    def keep(message: String) -> None:
+        received.append(message.data)
+
+    subscription = ros.client_node.create_subscription(String, topic, keep, SCHEMA_QOS)
     try:
         deadline = time.monotonic() + 30.0  # by the clock: spin_once returns at any callback
         while not received and time.monotonic() < deadline:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import os
 import urllib.error
 import urllib.request
 from collections.abc import Iterator
@@ -197,12 +198,13 @@ def test_downloaded_params_file_passes_check_params(
     assert cli_main(["check-params", str(schema), str(saved), "--node", CAM]) == 0
 
 
-def test_screenshot_for_the_docs(page: Page, server: TuneServer) -> None:
+def test_screenshot_for_the_docs(page: Page, server: TuneServer, tmp_path: Path) -> None:
+    """The picture in the docs; `make screenshots` sets GENPARAMS_SCREENSHOTS=docs/images
+    to refresh it there, every other run leaves the repository alone."""
     page.set_viewport_size({"width": 1100, "height": 900})
     open_node(page, server, CAM)
     expect(page.locator("body[data-ready]")).to_be_attached()
-    target = ROOT / "docs/images/tune.png"
-    target.parent.mkdir(exist_ok=True)
+    target = Path(os.environ.get("GENPARAMS_SCREENSHOTS", tmp_path)) / "tune.png"
     page.screenshot(path=str(target), full_page=True)
     assert target.stat().st_size > 10_000
 
@@ -228,7 +230,10 @@ def test_read_only_page_and_token(page: Page, server: TuneServer) -> None:
         open_node(page, viewer, CAM)
         expect(control(page, CAM, "camera.encoding")).to_be_disabled()
         expect(page.locator("#mode")).to_be_visible()
-        body = {"node": CAM, "params": [{"name": "camera.fps", "type": "double", "value": 5}]}
+        body: dict[str, object] = {
+            "node": CAM,
+            "params": [{"name": "camera.fps", "type": "double", "value": 5}],
+        }
         assert post(viewer.url + "api/set", body) == 403
         guarded.start()
         assert guarded.url.endswith("/?token=s3cret")
