@@ -25,7 +25,7 @@ from genparams.paramsfile.ros_yaml import (
     ros_type_name,
 )
 from genparams.schema.errors import Location, SchemaError, SchemaProblem
-from genparams.schema.loader import LoadedDocument, Path, compose_yaml, dotted
+from genparams.schema.loader import LoadedDocument, Path, compose_yaml, dotted, yaml_events
 
 
 @dataclass(frozen=True)
@@ -82,7 +82,7 @@ def _ros_scalar(node: yaml.ScalarNode) -> Any:
 
 def _aliases(text: str, file: str) -> list[SchemaProblem]:
     problems = []
-    for event in yaml.parse(text, Loader=yaml.SafeLoader):
+    for event in yaml_events(text):
         if isinstance(event, yaml.AliasEvent):
             mark = event.start_mark
             line, column = (mark.line + 1, mark.column + 1) if mark is not None else (1, 1)

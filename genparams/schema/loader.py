@@ -138,11 +138,16 @@ def _compose(
     return document, builder.problems
 
 
+def yaml_events(text: str) -> Iterator[yaml.Event]:
+    """The parser's events for ``text``, from libyaml when it is there (30x faster)."""
+    return yaml.parse(text, Loader=_SafeLoader)
+
+
 def _check_nesting(text: str, file: str) -> None:
     """Reject deep nesting before composing: libyaml's composer recurses in C and would
     crash the process on ``[[[[...`` thousands deep. Its parser, used here, does not."""
     depth = nodes = 0
-    for event in yaml.parse(text, Loader=_SafeLoader):
+    for event in yaml_events(text):
         if isinstance(event, (yaml.ScalarEvent, yaml.CollectionStartEvent)):
             nodes += 1
             if nodes > MAX_NODES:
