@@ -13,6 +13,7 @@ from genparams.paramsfile.deployment import Deployed, check_deployment
 from genparams.paramsfile.manifest import Manifest, NodeEntry, parse_map, read_manifest
 from genparams.paramsfile.params_reader import read_params_file
 from genparams.schema.errors import SchemaError
+from genparams.schema.input_file import read_input_file
 from genparams.schema.model import Schema
 
 
@@ -47,9 +48,9 @@ def run(args: argparse.Namespace) -> int:
     code = 0
     for params in args.params:
         try:
-            text = params.read_text(encoding="utf-8")
-        except (OSError, UnicodeDecodeError) as exc:
-            print(f"genparams check-deployment: cannot read {params}: {exc}", file=sys.stderr)
+            text = read_input_file(params, "params file")
+        except SchemaError as exc:
+            print(exc, file=sys.stderr)
             code = 2
             continue
         document = read_params_file(text, str(params))
@@ -72,11 +73,6 @@ def _manifest(args: argparse.Namespace) -> Manifest | None:
             manifest = read_manifest(args.manifest)
         except SchemaError as exc:
             print(exc, file=sys.stderr)
-            return None
-        except (OSError, UnicodeDecodeError) as exc:
-            print(
-                f"genparams check-deployment: cannot read {args.manifest}: {exc}", file=sys.stderr
-            )
             return None
         entries.extend(manifest.nodes)
         known = manifest.known

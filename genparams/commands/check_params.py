@@ -10,6 +10,8 @@ from genparams.commands._schemas import add_schema_arguments, bound_spec, load_b
 from genparams.paramsfile.check_params import check_files
 from genparams.paramsfile.params_reader import read_params_file
 from genparams.paramsfile.ros_yaml import absolute, node_name_problem
+from genparams.schema.errors import SchemaError
+from genparams.schema.input_file import read_input_file
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -59,9 +61,9 @@ def run(args: argparse.Namespace) -> int:
     code = 0
     for params in args.params:
         try:
-            text = params.read_text(encoding="utf-8")
-        except (OSError, UnicodeDecodeError) as exc:
-            print(f"genparams check-params: cannot read {params}: {exc}", file=sys.stderr)
+            text = read_input_file(params, "params file")
+        except SchemaError as exc:
+            print(exc, file=sys.stderr)
             code = 2
             continue
         document = read_params_file(text, str(params))

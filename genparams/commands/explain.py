@@ -16,6 +16,7 @@ from genparams.paramsfile.manifest import read_manifest
 from genparams.paramsfile.params_reader import ParamsDocument, read_params_file
 from genparams.paramsfile.ros_yaml import absolute, node_matches, node_name_problem
 from genparams.schema.errors import SchemaError
+from genparams.schema.input_file import read_input_file
 
 
 class _InOrder(argparse.Action):
@@ -57,8 +58,8 @@ def run(args: argparse.Namespace) -> int:
     if args.manifest is not None:
         try:
             manifest = read_manifest(args.manifest)
-        except (SchemaError, OSError, UnicodeDecodeError) as exc:
-            print(f"genparams explain: {exc}", file=sys.stderr)
+        except SchemaError as exc:
+            print(exc, file=sys.stderr)
             return 2
         known += manifest.known
         for entry in manifest.nodes:
@@ -91,9 +92,9 @@ def _documents(inputs: list[tuple[str, str]]) -> list[ParamsDocument] | None:
                 return None
             continue
         try:
-            text = Path(value).read_text(encoding="utf-8")
-        except (OSError, UnicodeDecodeError) as exc:
-            print(f"genparams explain: cannot read {value}: {exc}", file=sys.stderr)
+            text = read_input_file(value, "params file")
+        except SchemaError as exc:
+            print(exc, file=sys.stderr)
             return None
         documents.append(read_params_file(text, value))
     return documents

@@ -11,7 +11,8 @@ from genparams.gpl.convert import GplError, Imported, import_gpl
 from genparams.gpl.emit import schema_text, stub_text
 from genparams.integration.writing import write_all
 from genparams.schema.errors import SchemaError
-from genparams.schema.loader import MAX_BYTES, load_yaml
+from genparams.schema.input_file import read_input_file
+from genparams.schema.loader import load_yaml
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -47,14 +48,10 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 def run(args: argparse.Namespace) -> int:
     file = str(args.gpl_file)
     try:
-        if args.gpl_file.stat().st_size > MAX_BYTES:
-            print(f"{file}:1:1: file is larger than {MAX_BYTES} bytes", file=sys.stderr)
-            return 2
-        document = load_yaml(args.gpl_file.read_text(encoding="utf-8"), file)
+        document = load_yaml(
+            read_input_file(args.gpl_file, "generate_parameter_library file"), file
+        )
         imported = import_gpl(document, args.checks_module, args.adopt)
-    except (OSError, UnicodeDecodeError) as exc:
-        print(f"{file}:1:1: cannot read: {exc}", file=sys.stderr)
-        return 2
     except SchemaError as exc:
         print(exc, file=sys.stderr)
         return 2
