@@ -6,6 +6,7 @@ import argparse
 import sys
 from pathlib import Path
 
+from genparams.commands._common import complain
 from genparams.commands._schemas import add_schema_arguments, bound_spec, load_bounds
 from genparams.paramsfile.check_params import check_files
 from genparams.paramsfile.params_reader import read_params_file
@@ -53,7 +54,7 @@ def run(args: argparse.Namespace) -> int:
     for node in args.node:
         problem = node_name_problem(node)
         if problem is not None:
-            print(f"genparams check-params: invalid --node {node!r}: {problem}", file=sys.stderr)
+            complain(f"genparams check-params: invalid --node {node!r}: {problem}")
             return 2
     bounds = load_bounds([args.schema, *args.also])
     if bounds is None:

@@ -7,7 +7,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from genparams.commands._common import emit
+from genparams.commands._common import complain, emit
 from genparams.commands._schemas import add_schema_arguments, load_bounds
 from genparams.commands.check_params import add_known_argument
 from genparams.outputs.explain_text import text_report, yaml_report
@@ -51,7 +51,7 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 def run(args: argparse.Namespace) -> int:
     problem = node_name_problem(args.node)
     if problem is not None:
-        print(f"genparams explain: invalid node {args.node!r}: {problem}", file=sys.stderr)
+        complain(f"genparams explain: invalid node {args.node!r}: {problem}")
         return 2
     node = absolute(args.node)
     specs, known = list(args.also), list(args.known)
@@ -88,7 +88,7 @@ def _documents(inputs: list[tuple[str, str]]) -> list[ParamsDocument] | None:
             try:
                 documents.append(overrides_document([value], start=rules))
             except RuleError as exc:
-                print(f"genparams explain: {exc}", file=sys.stderr)
+                complain(f"genparams explain: {exc}")
                 return None
             continue
         try:

@@ -7,6 +7,7 @@ import sys
 from pathlib import Path
 
 from genparams.api import load_schema
+from genparams.commands._common import complain
 from genparams.gpl.convert import GplError, Imported, import_gpl
 from genparams.gpl.emit import schema_text, stub_text
 from genparams.integration.writing import write_all
@@ -56,7 +57,7 @@ def run(args: argparse.Namespace) -> int:
         print(exc, file=sys.stderr)
         return 2
     except GplError as exc:
-        print(f"{file}:1:1: {exc}", file=sys.stderr)
+        complain(f"{file}:1:1: {exc}")
         return 2
     module = args.checks_module or f"{imported.name}_checks"
     if imported.errors:
@@ -73,7 +74,7 @@ def run(args: argparse.Namespace) -> int:
         for problem in sorted(imported.warnings):
             print(problem, file=sys.stderr)
         print(exc, file=sys.stderr)
-        print(f"genparams import-gpl: {file}: the imported schema is not valid", file=sys.stderr)
+        complain(f"genparams import-gpl: {file}: the imported schema is not valid")
         return 2
     outputs: dict[Path, str] = {}
     if target is not None:
@@ -95,7 +96,7 @@ def _report(imported: Imported, module: str, outputs: dict[Path, str]) -> None:
         stub = next((p for p in outputs if p.suffix == ".py"), None)
         where = f"stubs in {stub}" if stub else "write them in Python"
         names = ", ".join(sorted(imported.customs))
-        print(f"custom validators to implement in {module} ({where}): {names}", file=sys.stderr)
+        complain(f"custom validators to implement in {module} ({where}): {names}")
     lost = imported.parameters - imported.imported
     print(
         f"imported {imported.imported} of {imported.parameters} parameters"

@@ -48,6 +48,8 @@ class LoadedDocument:
     data: Any
     key_locations: dict[Path, Location] = field(default_factory=dict)
     value_locations: dict[Path, Location] = field(default_factory=dict)
+    # The problems that are a key written twice in one mapping (also among the problems).
+    duplicate_keys: list[SchemaProblem] = field(default_factory=list)
 
     def key_location(self, path: Path) -> Location:
         """Where the key of ``path`` is written (falls back to its nearest ancestor)."""
@@ -298,14 +300,13 @@ class _Builder:
             self.check_text(key, key_node, child_path)
             if key in result:
                 first = self.document.key_locations[child_path]
-                self.problems.append(
-                    SchemaProblem(
-                        self.location(key_node),
-                        dotted(child_path),
-                        "duplicate key "
-                        f"(first defined at line {first.line}, column {first.column})",
-                    )
+                duplicate = SchemaProblem(
+                    self.location(key_node),
+                    dotted(child_path),
+                    f"duplicate key (first defined at line {first.line}, column {first.column})",
                 )
+                self.problems.append(duplicate)
+                self.document.duplicate_keys.append(duplicate)
                 continue
             self.document.key_locations[child_path] = self.location(key_node)
             self.document.value_locations[child_path] = self.location(value_node)
