@@ -74,9 +74,7 @@ def unreadable(folder: Path) -> Iterator[tuple[str, Path, str]]:
 
 
 @pytest.mark.parametrize("command", COMMANDS)
-def test_each_command_names_a_file_it_cannot_read(
-    command: str, tmp_path: Path, good: Path
-) -> None:
+def test_each_command_names_a_file_it_cannot_read(command: str, tmp_path: Path, good: Path) -> None:
     _, what = COMMANDS[command]
     for case, file, says in unreadable(tmp_path):
         code, stderr = run_cli(*command_line(command, file, good))
@@ -183,7 +181,7 @@ def test_endless_inputs_are_refused_in_bounded_memory(tmp_path: Path, good: Path
     )
     assert result.returncode == 0, result.stderr
     outcome = json.loads(result.stdout)
-    for (name, argv, fifo), got in zip(cases, outcome["results"], strict=True):
+    for (name, _argv, fifo), got in zip(cases, outcome["results"], strict=True):
         file = fifo or "/dev/zero"
         what = COMMANDS[name.rsplit(" ", 1)[0]][1]
         assert got["code"] == 2, got
