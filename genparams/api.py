@@ -8,8 +8,9 @@ from collections.abc import Iterator
 from pathlib import Path
 
 from genparams.schema.builder import build_schema, model_problems
-from genparams.schema.errors import Location, SchemaError, SchemaProblem
-from genparams.schema.loader import MAX_BYTES, load_yaml
+from genparams.schema.errors import SchemaError
+from genparams.schema.input_file import read_input_file
+from genparams.schema.loader import load_yaml
 from genparams.schema.model import Schema
 from genparams.schema.schema_check import check_document
 
@@ -41,20 +42,7 @@ def load_schema(path: str | Path, text: str | None = None) -> Schema:
 def _load_schema(path: str | Path, text: str | None) -> Schema:
     file = str(path)
     if text is None:
-        try:
-            if Path(path).stat().st_size > MAX_BYTES:  # refuse before reading it into memory
-                raise SchemaError(
-                    [
-                        SchemaProblem(
-                            Location(file, 1, 1), "", f"file is larger than {MAX_BYTES} bytes"
-                        )
-                    ]
-                )
-            text = Path(path).read_text(encoding="utf-8")
-        except (OSError, UnicodeDecodeError) as exc:
-            raise SchemaError(
-                [SchemaProblem(Location(file, 1, 1), "", f"cannot read schema: {exc}")]
-            ) from None
+        text = read_input_file(path, "schema")
     document = load_yaml(text, file)
     problems = check_document(document)
     if problems:

@@ -9,6 +9,8 @@ from typing import Any
 from genparams.audit.findings import DRIFT_FILE, Finding
 from genparams.paramsfile.params_reader import ParamsDocument, read_params_file
 from genparams.paramsfile.ros_yaml import node_matches
+from genparams.schema.errors import SchemaError
+from genparams.schema.input_file import read_input_file
 
 
 class DeploymentError(ValueError):
@@ -19,9 +21,9 @@ def read_deployment(paths: Sequence[Path]) -> list[ParamsDocument]:
     documents = []
     for path in paths:
         try:
-            text = path.read_text(encoding="utf-8")
-        except (OSError, UnicodeDecodeError) as exc:
-            raise DeploymentError(f"cannot read {path}: {exc}") from None
+            text = read_input_file(path, "params file")
+        except SchemaError as exc:
+            raise DeploymentError(str(exc)) from None
         document = read_params_file(text, str(path))
         if document.problems:
             raise DeploymentError("\n".join(str(p) for p in document.problems))

@@ -7,6 +7,7 @@ from pathlib import Path
 
 from genparams.api import load_schema
 from genparams.integration.writing import write_all
+from genparams.runtime.visible import visible
 from genparams.schema.errors import SchemaError
 from genparams.schema.model import Schema
 
@@ -18,6 +19,11 @@ def schema_or_none(path: Path) -> Schema | None:
     except SchemaError as exc:
         print(exc, file=sys.stderr)
         return None
+
+
+def complain(message: str) -> None:
+    """Print an error on stderr; text from the user in it shows every character (visible)."""
+    print(visible(message), file=sys.stderr)
 
 
 def emit(text: str, output: Path | None) -> None:

@@ -3,10 +3,9 @@
 from __future__ import annotations
 
 import argparse
-import sys
 from pathlib import Path
 
-from genparams.commands._common import schema_or_none
+from genparams.commands._common import complain, schema_or_none
 from genparams.paramsfile.check_params import Bound
 from genparams.runtime.naming import is_ros_token, join_prefix
 
@@ -45,10 +44,9 @@ def load_bounds(specs: list[tuple[Path, str]]) -> list[Bound] | None:
     for bound in bounds:
         for other in bounds:
             if other is not bound and _overlap(bound, other):
-                print(
+                complain(
                     f"genparams: {bound.schema.source_name} and {other.schema.source_name} "
-                    f"both declare {_overlap(bound, other)} (prefixes {prefixes})",
-                    file=sys.stderr,
+                    f"both declare {_overlap(bound, other)} (prefixes {prefixes})"
                 )
                 return None
     return bounds

@@ -54,8 +54,8 @@ def run(args: argparse.Namespace) -> int:
 
     try:
         documents = read_deployment(args.params_file)
-    except DeploymentError as exc:
-        print(f"genparams audit: {exc}", file=sys.stderr)
+    except DeploymentError as exc:  # its problems name their file and place
+        print(exc, file=sys.stderr)
         return 2
     graph = Graph("genparams_audit")
     try:

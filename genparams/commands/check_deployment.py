@@ -6,13 +6,15 @@ import argparse
 import sys
 from pathlib import Path
 
-from genparams.commands._common import schema_or_none
+from genparams.commands._common import complain, schema_or_none
 from genparams.commands.check_params import add_known_argument
 from genparams.paramsfile.check_params import Bound
 from genparams.paramsfile.deployment import Deployed, check_deployment
 from genparams.paramsfile.manifest import Manifest, NodeEntry, parse_map, read_manifest
 from genparams.paramsfile.params_reader import read_params_file
+from genparams.runtime.visible import visible
 from genparams.schema.errors import SchemaError
+from genparams.schema.input_file import read_input_file
 from genparams.schema.model import Schema
 
 
@@ -47,9 +49,9 @@ def run(args: argparse.Namespace) -> int:
     code = 0
     for params in args.params:
         try:
-            text = params.read_text(encoding="utf-8")
-        except (OSError, UnicodeDecodeError) as exc:
-            print(f"genparams check-deployment: cannot read {params}: {exc}", file=sys.stderr)
+            text = read_input_file(params, "params file")
+        except SchemaError as exc:
+            print(exc, file=sys.stderr)
             code = 2
             continue
         document = read_params_file(text, str(params))
@@ -58,7 +60,7 @@ def run(args: argparse.Namespace) -> int:
             print(line)
         if args.verbose:
             for note in checked:
-                print(f"{params}: {note}")
+                print(visible(f"{params}: {note}"))
         if report.problems:
             code = max(code, 1)
     return code
@@ -73,18 +75,13 @@ def _manifest(args: argparse.Namespace) -> Manifest | None:
         except SchemaError as exc:
             print(exc, file=sys.stderr)
             return None
-        except (OSError, UnicodeDecodeError) as exc:
-            print(
-                f"genparams check-deployment: cannot read {args.manifest}: {exc}", file=sys.stderr
-            )
-            return None
         entries.extend(manifest.nodes)
         known = manifest.known
     for text in args.map:
         try:
             entries.append(parse_map(text))
         except ValueError as exc:
-            print(f"genparams check-deployment: --map: {exc}", file=sys.stderr)
+            complain(f"genparams check-deployment: --map: {exc}")
             return None
     if not entries:
         print(

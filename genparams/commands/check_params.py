@@ -6,10 +6,13 @@ import argparse
 import sys
 from pathlib import Path
 
+from genparams.commands._common import complain
 from genparams.commands._schemas import add_schema_arguments, bound_spec, load_bounds
 from genparams.paramsfile.check_params import check_files
 from genparams.paramsfile.params_reader import read_params_file
 from genparams.paramsfile.ros_yaml import absolute, node_name_problem
+from genparams.schema.errors import SchemaError
+from genparams.schema.input_file import read_input_file
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -51,7 +54,7 @@ def run(args: argparse.Namespace) -> int:
     for node in args.node:
         problem = node_name_problem(node)
         if problem is not None:
-            print(f"genparams check-params: invalid --node {node!r}: {problem}", file=sys.stderr)
+            complain(f"genparams check-params: invalid --node {node!r}: {problem}")
             return 2
     bounds = load_bounds([args.schema, *args.also])
     if bounds is None:
@@ -59,9 +62,9 @@ def run(args: argparse.Namespace) -> int:
     code = 0
     for params in args.params:
         try:
-            text = params.read_text(encoding="utf-8")
-        except (OSError, UnicodeDecodeError) as exc:
-            print(f"genparams check-params: cannot read {params}: {exc}", file=sys.stderr)
+            text = read_input_file(params, "params file")
+        except SchemaError as exc:
+            print(exc, file=sys.stderr)
             code = 2
             continue
         document = read_params_file(text, str(params))

@@ -3,10 +3,9 @@
 from __future__ import annotations
 
 import argparse
-import sys
 from pathlib import Path
 
-from genparams.commands._common import emit
+from genparams.commands._common import complain, emit
 from genparams.commands._schemas import add_schema_arguments, bound_spec, load_bounds
 from genparams.outputs.params_file import NodeNameError, default_params_file
 from genparams.outputs.render import render_params_file
@@ -36,7 +35,7 @@ def run(args: argparse.Namespace) -> int:
     try:
         params_file = default_params_file(schema, args.node)
     except NodeNameError as exc:
-        print(f"genparams defaults: {exc}", file=sys.stderr)
+        complain(f"genparams defaults: {exc}")
         return 2
     emit(render_params_file(params_file), args.output)
     return 0

@@ -7,7 +7,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from genparams.commands._common import emit
+from genparams.commands._common import complain, emit
 from genparams.commands._schemas import add_schema_arguments, load_bounds
 from genparams.commands.check_params import add_known_argument
 from genparams.outputs.explain_text import text_report, yaml_report
@@ -16,6 +16,7 @@ from genparams.paramsfile.manifest import read_manifest
 from genparams.paramsfile.params_reader import ParamsDocument, read_params_file
 from genparams.paramsfile.ros_yaml import absolute, node_matches, node_name_problem
 from genparams.schema.errors import SchemaError
+from genparams.schema.input_file import read_input_file
 
 
 class _InOrder(argparse.Action):
@@ -50,15 +51,15 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 def run(args: argparse.Namespace) -> int:
     problem = node_name_problem(args.node)
     if problem is not None:
-        print(f"genparams explain: invalid node {args.node!r}: {problem}", file=sys.stderr)
+        complain(f"genparams explain: invalid node {args.node!r}: {problem}")
         return 2
     node = absolute(args.node)
     specs, known = list(args.also), list(args.known)
     if args.manifest is not None:
         try:
             manifest = read_manifest(args.manifest)
-        except (SchemaError, OSError, UnicodeDecodeError) as exc:
-            print(f"genparams explain: {exc}", file=sys.stderr)
+        except SchemaError as exc:
+            print(exc, file=sys.stderr)
             return 2
         known += manifest.known
         for entry in manifest.nodes:
@@ -87,13 +88,13 @@ def _documents(inputs: list[tuple[str, str]]) -> list[ParamsDocument] | None:
             try:
                 documents.append(overrides_document([value], start=rules))
             except RuleError as exc:
-                print(f"genparams explain: {exc}", file=sys.stderr)
+                complain(f"genparams explain: {exc}")
                 return None
             continue
         try:
-            text = Path(value).read_text(encoding="utf-8")
-        except (OSError, UnicodeDecodeError) as exc:
-            print(f"genparams explain: cannot read {value}: {exc}", file=sys.stderr)
+            text = read_input_file(value, "params file")
+        except SchemaError as exc:
+            print(exc, file=sys.stderr)
             return None
         documents.append(read_params_file(text, value))
     return documents

@@ -7,11 +7,13 @@ import sys
 from pathlib import Path
 
 from genparams.api import load_schema
+from genparams.commands._common import complain
 from genparams.gpl.convert import GplError, Imported, import_gpl
 from genparams.gpl.emit import schema_text, stub_text
 from genparams.integration.writing import write_all
 from genparams.schema.errors import SchemaError
-from genparams.schema.loader import MAX_BYTES, load_yaml
+from genparams.schema.input_file import read_input_file
+from genparams.schema.loader import load_yaml
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -47,19 +49,15 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 def run(args: argparse.Namespace) -> int:
     file = str(args.gpl_file)
     try:
-        if args.gpl_file.stat().st_size > MAX_BYTES:
-            print(f"{file}:1:1: file is larger than {MAX_BYTES} bytes", file=sys.stderr)
-            return 2
-        document = load_yaml(args.gpl_file.read_text(encoding="utf-8"), file)
+        document = load_yaml(
+            read_input_file(args.gpl_file, "generate_parameter_library file"), file
+        )
         imported = import_gpl(document, args.checks_module, args.adopt)
-    except (OSError, UnicodeDecodeError) as exc:
-        print(f"{file}:1:1: cannot read: {exc}", file=sys.stderr)
-        return 2
     except SchemaError as exc:
         print(exc, file=sys.stderr)
         return 2
     except GplError as exc:
-        print(f"{file}:1:1: {exc}", file=sys.stderr)
+        complain(f"{file}:1:1: {exc}")
         return 2
     module = args.checks_module or f"{imported.name}_checks"
     if imported.errors:
@@ -77,7 +75,7 @@ def run(args: argparse.Namespace) -> int:
         for problem in sorted(imported.warnings):
             print(problem, file=sys.stderr)
         print(exc, file=sys.stderr)
-        print(f"genparams import-gpl: {file}: the imported schema is not valid", file=sys.stderr)
+        complain(f"genparams import-gpl: {file}: the imported schema is not valid")
         return 2
     outputs: dict[Path, str] = {}
     if target is not None:
@@ -99,7 +97,7 @@ def _report(imported: Imported, module: str, outputs: dict[Path, str]) -> None:
         stub = next((p for p in outputs if p.suffix == ".py"), None)
         where = f"stubs in {stub}" if stub else "write them in Python"
         names = ", ".join(sorted(imported.customs))
-        print(f"custom validators to implement in {module} ({where}): {names}", file=sys.stderr)
+        complain(f"custom validators to implement in {module} ({where}): {names}")
     lost = imported.parameters - imported.imported
     print(
         f"imported {imported.imported} of {imported.parameters} parameters"

@@ -7,6 +7,7 @@ from typing import Any
 from genparams.outputs.yaml_text import key_text, node_key_text, scalar_text
 from genparams.paramsfile.explain import Explanation, Row
 from genparams.paramsfile.ros_yaml import PARAMS_KEY, ros_type_name
+from genparams.runtime.visible import visible
 
 
 def shown(value: Any) -> str:
@@ -25,14 +26,17 @@ def text_report(explanation: Explanation) -> str:
     lines = [f"{explanation.node}: {explanation.sections} section(s) apply, in rcl's order"]
     table = [("parameter", "value", "source", "shadowed")]
     for row in sorted(explanation.rows, key=lambda r: r.name):
-        table.append((row.name, shown(row.value), _source(row), _shadowed(row)))
+        cells = (row.name, shown(row.value), _source(row), _shadowed(row))
+        table.append((visible(cells[0]), visible(cells[1]), visible(cells[2]), visible(cells[3])))
     widths = [max(len(r[i]) for r in table) for i in range(3)]
     for cells in table:
         text = "  ".join(c.ljust(w) for c, w in zip(cells, widths, strict=False))
         lines.append(f"{text}  {cells[3]}".rstrip())
     ignored = [str(p) for p in explanation.report.problems]
     ignored += [
-        f"{s.section.node_location}: {s.section.node}: section for another node: {s.reason}"
+        visible(
+            f"{s.section.node_location}: {s.section.node}: section for another node: {s.reason}"
+        )
         for s in explanation.near_misses
     ]
     if ignored:

@@ -21,7 +21,7 @@ from genparams.paramsfile.ros_yaml import ros_type_name
 from genparams.paramsfile.section_checker import SectionChecker
 from genparams.runtime.naming import join_prefix
 from genparams.runtime.suggest import did_you_mean_name
-from genparams.schema.errors import SchemaProblem
+from genparams.schema.errors import Location, SchemaProblem
 from genparams.schema.model import Schema
 
 # Parameters rclpy declares on every node, by type; and a namespace it owns.
@@ -92,8 +92,9 @@ def check_files(
         warnings.extend(_prefixed(p, bound.prefix) for p in checker.warnings)
         checkers.append((bound.prefix, checker))
     owned = [join_prefix(prefix, name) for prefix, checker in checkers for name in checker.names()]
+    unclaimed = [(prefix, _unknown_keys(checker)) for prefix, checker in checkers]
     for entry in (e for section in applied for e in section.entries):
-        if not any(_claims(prefix, checker, entry) for prefix, checker in checkers):
+        if not any(_claims(prefix, unknown, entry) for prefix, unknown in unclaimed):
             problem = _unowned(entry, owned, known)
             if problem is not None:
                 problems.append(problem)
@@ -151,14 +152,17 @@ def own_sections(sections: Sequence[Section], prefix: str) -> list[Section]:
     ]
 
 
-def _claims(prefix: str, checker: SectionChecker, entry: ParamEntry) -> bool:
+def _unknown_keys(checker: SectionChecker) -> set[tuple[Location, str]]:
+    """Where and under which name each entry the checker does not own was written."""
+    return {(u.key_location, u.name) for u in checker.unknown_entries}
+
+
+def _claims(prefix: str, unknown: set[tuple[Location, str]], entry: ParamEntry) -> bool:
+    """Whether the class under ``prefix`` owns ``entry`` (a set lookup: linear in the file)."""
     head = prefix + "." if prefix else ""
     if not entry.name.startswith(head):
         return False
-    name = entry.name[len(head) :]
-    return not any(
-        u.key_location == entry.key_location and u.name == name for u in checker.unknown_entries
-    )
+    return (entry.key_location, entry.name[len(head) :]) not in unknown
 
 
 def _prefixed(problem: SchemaProblem, prefix: str) -> SchemaProblem:

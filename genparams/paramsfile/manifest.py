@@ -26,6 +26,7 @@ from typing import Any
 from genparams.paramsfile.ros_yaml import absolute, node_pattern_problem
 from genparams.runtime.naming import is_ros_token
 from genparams.schema.errors import SchemaError, SchemaProblem
+from genparams.schema.input_file import read_input_file
 from genparams.schema.loader import LoadedDocument, load_yaml
 from genparams.schema.loader import Path as KeyPath
 
@@ -52,8 +53,8 @@ class Manifest:
 
 
 def read_manifest(path: Path) -> Manifest:
-    """The manifest at ``path``; raises SchemaError listing every problem, OSError if unreadable."""
-    document = load_yaml(path.read_text(encoding="utf-8"), str(path))
+    """The manifest at ``path``; raises SchemaError listing every problem (unreadable too)."""
+    document = load_yaml(read_input_file(path, "manifest"), str(path))
     reader = _Reader(document, path.parent)
     manifest = reader.manifest()
     if reader.problems:

@@ -25,7 +25,7 @@ from genparams.paramsfile.ros_yaml import (
     ros_type_name,
 )
 from genparams.schema.errors import Location, SchemaError, SchemaProblem
-from genparams.schema.loader import LoadedDocument, Path, compose_yaml, dotted
+from genparams.schema.loader import LoadedDocument, Path, compose_yaml, dotted, yaml_events
 
 
 @dataclass(frozen=True)
@@ -58,22 +58,25 @@ def read_params_file(text: str, file: str) -> ParamsDocument:
     A YAML syntax error leaves nothing to read and is returned as the only problem.
     """
     try:
-        document, duplicates = compose_yaml(text, file, scalar=_ros_scalar)
+        document, problems = compose_yaml(text, file, scalar=_ros_scalar)
         aliases = _aliases(text, file)
     except SchemaError as exc:
         return ParamsDocument(file, (), exc.problems)
     reader = _Reader(document)
-    reader.problems.extend(_as_parameter_problem(p) for p in duplicates)
+    duplicates = set(document.duplicate_keys)
+    reader.problems.extend(_as_parameter_problem(p, p in duplicates) for p in problems)
     reader.problems.extend(aliases)
     reader.read()
     return ParamsDocument(file, tuple(reader.sections), tuple(reader.problems))
 
 
-def _as_parameter_problem(problem: SchemaProblem) -> SchemaProblem:
-    """A duplicate key named as ROS names the parameter, with what ROS does about it."""
+def _as_parameter_problem(problem: SchemaProblem, duplicate: bool) -> SchemaProblem:
+    """A problem of the YAML named as ROS names the parameter; a duplicate key also says
+    what ROS does about it (other problems, such as an unsupported tag, do not)."""
     _, marker, name = problem.key.partition(f".{PARAMS_KEY}.")
     key = name if marker else problem.key
-    return SchemaProblem(problem.location, key, f"{problem.message}; ROS keeps the later value")
+    message = f"{problem.message}; ROS keeps the later value" if duplicate else problem.message
+    return SchemaProblem(problem.location, key, message)
 
 
 def _ros_scalar(node: yaml.ScalarNode) -> Any:
@@ -82,7 +85,7 @@ def _ros_scalar(node: yaml.ScalarNode) -> Any:
 
 def _aliases(text: str, file: str) -> list[SchemaProblem]:
     problems = []
-    for event in yaml.parse(text, Loader=yaml.SafeLoader):
+    for event in yaml_events(text):
         if isinstance(event, yaml.AliasEvent):
             mark = event.start_mark
             line, column = (mark.line + 1, mark.column + 1) if mark is not None else (1, 1)

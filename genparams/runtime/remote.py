@@ -27,6 +27,7 @@ from genparams.runtime.spec import CompiledParam, compile_schema
 from genparams.runtime.suggest import did_you_mean
 from genparams.runtime.tree import build_tree
 from genparams.runtime.types import ValueTypeError
+from genparams.runtime.visible import visible
 
 if TYPE_CHECKING:
     from genparams.runtime.remote_watch import RemoteWatch
@@ -214,7 +215,9 @@ class RemoteParams(Generic[P]):
             if param is None:
                 known = sorted([*self.compiled.parameters, *self.compiled.templates])
                 hint = did_you_mean(name, known)
-                reasons.append(f"{name}: no such parameter in {self.compiled.spec.name}{hint}")
+                reasons.append(
+                    visible(f"{name}: no such parameter in {self.compiled.spec.name}{hint}")
+                )
                 continue
             reason = _check_one(param, value)
             if isinstance(reason, str):

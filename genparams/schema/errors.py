@@ -5,6 +5,8 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass
 
+from genparams.runtime.visible import visible
+
 
 @dataclass(frozen=True, order=True)
 class Location:
@@ -24,7 +26,7 @@ class SchemaProblem:
 
     def __str__(self) -> str:
         key = f" {self.key}:" if self.key else ""
-        return f"{self.location}:{key} {self.message}"
+        return visible(f"{self.location}:{key} {self.message}")  # one line, every char shown
 
 
 class SchemaError(Exception):

@@ -113,3 +113,15 @@ def test_profile_splits_declare_and_set_into_steps() -> None:
     for steps in (DECLARE_STEPS, SET_STEPS):
         for label in list(steps)[:-1]:  # the last is the whole call the shares refer to
             assert any(line.startswith(f"  - {label}: ") for line in lines), label
+
+
+def test_check_params_scale_runs_and_its_largest_file_fits_the_limit(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    from bench.check_params_scale import main, params_text
+    from genparams.schema.loader import MAX_BYTES
+
+    assert len(params_text(100_000).encode("utf-8")) <= MAX_BYTES
+    assert main(["--sizes", "20,40"]) == 0
+    rows = [line for line in capsys.readouterr().out.splitlines() if line.startswith("| 20")]
+    assert len(rows) == 1 and rows[0].count("|") == 6

@@ -69,3 +69,19 @@ def test_a_duplicate_node_key_is_named_by_the_node() -> None:
     text = "/a:\n  ros__parameters:\n    x: 1\n/a:\n  ros__parameters:\n    x: 2\n"
     document = read_params_file(text, "p.yaml")
     assert [p.key for p in document.problems] == ["/a"]
+
+
+@pytest.mark.parametrize(
+    ("line", "problem"),
+    [
+        ("    x: !!set {a}\n", "p.yaml:3:8: x: unsupported YAML tag tag:yaml.org,2002:set"),
+        ("    ? [a]\n    : 1\n", "p.yaml:3:7: /a.ros__parameters: keys must be plain strings"),
+        ('    "x\\0": 1\n', "p.yaml:3:5: x\\x00: text cannot contain NUL"),
+    ],
+    ids=["tag", "key not a string", "NUL in a key"],
+)
+def test_only_a_duplicate_key_says_ros_keeps_the_later_value(line: str, problem: str) -> None:
+    text = "/a:\n  ros__parameters:\n" + line + "    y: 1\n    y: 2\n"
+    other, duplicate = (str(p) for p in read_params_file(text, "p.yaml").problems)
+    assert other.startswith(problem) and "later value" not in other
+    assert "y: duplicate key" in duplicate and duplicate.endswith("; ROS keeps the later value")
