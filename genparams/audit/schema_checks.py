@@ -27,13 +27,16 @@ def frozen(value: Any) -> Any:
 
 def param_from_json(described: Mapping[str, Any], name: str) -> ParamSpec:
     kind = TYPES[described["type"]]
-    default = None if described["required"] else kind.coerce_default(described["default"])
+    optional = described.get("optional", False)
+    no_default = described["required"] or optional
+    default = None if no_default else kind.coerce_default(described["default"])
     span = described.get("range")
     return ParamSpec(
         name=name,
         type=described["type"],
         default=default,
         required=described["required"],
+        optional=optional,
         read_only=described["read_only"],
         range=None if span is None else (span["min"], span["max"], span["step"]),
         choices=None if described["choices"] is None else frozen(described["choices"]),
@@ -71,6 +74,9 @@ def check_class(
     for name, param_json in described_parameters(described, values):
         spec = param_from_json(param_json, name)
         compiled = compile_param(spec)
+        if name not in values and spec.optional:
+            typed[name] = None  # not set (the services read it as "unset"): allowed
+            continue
         if name not in values:
             findings.append(
                 Finding(node, VIOLATION, name, "declared in the schema, not on the node")
@@ -85,6 +91,10 @@ def check_value(
     node: str, compiled: CompiledParam, raw: Any, typed: dict[str, Any]
 ) -> list[Finding]:
     name = compiled.name
+    spec = compiled.spec
+    if spec.optional and raw is None:  # declared by type only and not set: nothing to check
+        typed[name] = None
+        return []
     try:
         value = compiled.type.from_ros(raw)
     except ValueError as exc:
@@ -98,8 +108,7 @@ def check_value(
         reason = check(value)
         if reason is not None:
             found.append(Finding(node, VIOLATION, name, reason, check.describe(), raw))
-    spec = compiled.spec
-    if not spec.required and value != spec.default:
+    if not spec.required and not spec.optional and value != spec.default:
         found.append(
             Finding(node, DRIFT_DEFAULT, name, "differs from the schema default", spec.default, raw)
         )

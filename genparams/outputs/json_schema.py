@@ -271,6 +271,8 @@ def hover_text(parameter: Parameter) -> str:
         facts.append("Write a decimal point (30.0, not 30): ROS does not convert.")
     if parameter.required:
         facts.append("Required: no default; the node does not start without it.")
+    elif parameter.optional:
+        facts.append("Optional: not set by default; the node tests whether it is.")
     else:
         facts.append(f"Default: {value_text(parameter.default, parameter.type)}.")
     lines.append(" ".join(facts))
@@ -278,7 +280,7 @@ def hover_text(parameter: Parameter) -> str:
 
 
 def _json_default(parameter: Parameter) -> Any:
-    if parameter.required:
+    if parameter.required or parameter.optional:
         return None
     value = parameter.default
     if isinstance(value, bytes):

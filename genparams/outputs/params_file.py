@@ -4,7 +4,8 @@ Loading the file with ``--params-file`` into a node that declares the generated
 class changes nothing: every default is spelled so ROS reads it back with its
 declared type (see yaml_text). Three kinds of parameter cannot be written and
 are left commented out, with the reason beside them: required parameters (they
-have no default; the node does not start until one is given), subnormal
+have no default; the node does not start until one is given), optional ones
+(not set until a file, an override or a set gives them a value), subnormal
 doubles (ROS reads them as strings) and empty lists (ROS reads ``[]`` as "not
 set", and rclpy refuses that on a node that declares parameters from
 overrides, so a file holding one would not load into every node).
@@ -172,6 +173,10 @@ def _parameter_entry(parameter: Parameter, indent: str, comments: bool) -> Entry
     notes = parameter_comment(parameter) if comments else ()
     if parameter.required:
         why = (f"Required {parameter.type.name}: no default; the node does not start without it.",)
+        return Entry(indent, key, "", (*notes, *why), disabled=True)
+    if parameter.optional:
+        kind = parameter.type.name
+        why = (f"Optional {kind}: not set by default; the node tests whether it is.",)
         return Entry(indent, key, "", (*notes, *why), disabled=True)
     text = value_text(parameter.default, parameter.type)
     if parameter.type.is_array and not parameter.default:

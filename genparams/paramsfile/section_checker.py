@@ -124,6 +124,8 @@ class SectionChecker:
                     f"warning: deprecated: {self.deprecated[entry.name]}",
                 )
             )
+        if param.spec.optional and entry.value is None:
+            return  # "not set" (ROS reads [] so): the node leaves an optional parameter unset
         try:
             value = param.type.from_ros(entry.value)
         except ValueTypeError as exc:
@@ -226,7 +228,9 @@ class SectionChecker:
         unusable: set[str] = set()  # given with a wrong value, already reported
         entries: dict[str, ParamEntry] = {}
         for name, param in self.compiled.parameters.items():
-            if not param.spec.required:
+            if param.spec.optional:
+                values[name] = None  # not set: rules reading it are not checked
+            elif not param.spec.required:
                 values[name] = param.type.coerce_default(param.spec.default)
         for section in sections:
             for entry in section.entries:

@@ -49,7 +49,13 @@ def descriptor_for(param: CompiledParam, full_name: str) -> ParameterDescriptor:
 
 
 def ros_parameter(param: CompiledParam, full_name: str, value: Any) -> Parameter:
-    """A typed-view value as an rclpy Parameter of the declared type (never inferred)."""
+    """A typed-view value as an rclpy Parameter of the declared type (never inferred).
+
+    None, an optional parameter not set, is NOT_SET: rclpy stores it so under a
+    statically typed descriptor, as ``declare_parameter(name, Parameter.Type.X)`` does.
+    """
+    if value is None:
+        return Parameter(full_name, Parameter.Type.NOT_SET)
     return Parameter(full_name, Parameter.Type(param.type.ros_type), param.type.to_ros(value))
 
 

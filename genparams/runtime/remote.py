@@ -12,6 +12,7 @@ from __future__ import annotations
 from collections.abc import Callable, Generator, Mapping
 from typing import TYPE_CHECKING, Any, Generic, TypeVar, cast
 
+from rcl_interfaces.msg import ParameterType
 from rclpy.node import Node
 from rclpy.parameter import Parameter, parameter_value_to_python
 from rclpy.parameter_client import AsyncParameterClient
@@ -32,6 +33,7 @@ if TYPE_CHECKING:
     from genparams.runtime.remote_watch import RemoteWatch
 
 P = TypeVar("P", bound=Params)
+_NOT_SET = ParameterType.PARAMETER_NOT_SET
 T = TypeVar("T")
 
 
@@ -115,8 +117,9 @@ class RemoteParams(Generic[P]):
             try:
                 messages = response_future.result().values
                 if len(messages) != len(names):
-                    # The service answers nothing at all when one name is not declared.
-                    self.client.list_parameters([], 0, report_missing)
+                    # The service answers nothing at all when one name is not declared, or
+                    # not set (an optional parameter): the types tell which.
+                    self.client.get_parameter_types(full_names, typed)
                     return
                 values: dict[str, Any] = {}
                 problems: list[str] = []
@@ -130,6 +133,25 @@ class RemoteParams(Generic[P]):
                     raise self.not_following(problems)
                 then(values)
             except Exception as exc:  # handed to whoever waits on the future
+                result.set_exception(exc)
+
+        def typed(response_future: Future) -> None:
+            try:
+                types = response_future.result().types
+                if len(types) != len(names):
+                    self.client.list_parameters([], 0, report_missing)
+                    return
+                unset = [n for n, t in zip(names, types, strict=True) if t == _NOT_SET]
+                refused = [self.full_name(n) for n in unset if not parameters[n].spec.optional]
+                if refused:
+                    raise self.not_following([f"{full}: not set" for full in refused])
+                rest = {n: p for n, p in parameters.items() if n not in unset}
+                nones = dict.fromkeys(unset)
+                if rest:
+                    self.read(rest, lambda values: then({**nones, **values}), result)
+                else:
+                    then(nones)
+            except Exception as exc:
                 result.set_exception(exc)
 
         def report_missing(response_future: Future) -> None:

@@ -69,6 +69,8 @@ def describe_parameter(param: CompiledParam, name: str) -> dict[str, Any]:
         described["range"] = {"min": low, "max": high, "step": step[0] if step else 0}
     if ros_range is not None:
         described["ros_range"] = True
+    if spec.optional:  # only when true: messages of other schemas stay as they were
+        described["optional"] = True
     return described
 
 

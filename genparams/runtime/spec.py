@@ -42,6 +42,9 @@ class ParamSpec:
     aliases: tuple[str, ...] = ()  # old dotted names, relative to the prefix
     configure_only: bool = False  # lifecycle nodes: set only while unconfigured or inactive
     adopt: bool = False  # declared first by other code of the node: taken over, not refused
+    # Declared by type only (rclpy: declare_parameter(name, Parameter.Type.X)): the value is
+    # None, NOT_SET on the node, until an override or a set gives it one.
+    optional: bool = False
 
 
 @dataclass(frozen=True)

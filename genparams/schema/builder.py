@@ -242,10 +242,19 @@ class _ModelBuilder:
         self, leaf: dict[str, Any], doc_path: Path, path: tuple[str, ...], attribute: str
     ) -> Parameter:
         param_type = TYPES[leaf["type"]]
-        required = "default" not in leaf
+        optional = leaf.get("optional", False)
+        required = "default" not in leaf and not optional
         default = None
-        default_ok = not required
-        if not required:
+        default_ok = "default" in leaf
+        if optional and "default" in leaf:
+            self.problem(
+                (*doc_path, "optional"),
+                "an optional parameter has no default (it is not set until an override or a "
+                "set gives it a value): remove default, or optional",
+                at_key=True,
+            )
+            default_ok = False
+        elif default_ok:
             try:
                 default = param_type.coerce_default(leaf["default"])
             except ValueTypeError as exc:
@@ -275,6 +284,7 @@ class _ModelBuilder:
             location=self.document.key_location(doc_path),
             configure_only=leaf.get("configure_only", False),
             adopt=leaf.get("adopt", False),
+            optional=optional,
         )
         # The runtime's own checks, compiled once: they judge the default here, and the
         # model keeps them to word each constraint in every output.
@@ -298,10 +308,28 @@ class _ModelBuilder:
                 "their keys, which other code does not follow",
                 at_key=True,
             )
+        if optional:
+            self.check_optional(parameter, doc_path)
         self.leaf_paths[parameter.ros_name] = doc_path
         for index, alias in enumerate(parameter.aliases):
             self.aliases.append((alias, (*doc_path, "aliases", index), parameter))
         return parameter
+
+    def check_optional(self, parameter: Parameter, doc_path: Path) -> None:
+        """What an optional parameter cannot be combined with."""
+        if naming.ENTRY_KEY in parameter.path:
+            self.problem(
+                (*doc_path, "optional"),
+                "optional is not supported inside a mapped group: give the parameter a default",
+                at_key=True,
+            )
+        if parameter.aliases:
+            self.problem(
+                (*doc_path, "optional"),
+                "an optional parameter cannot have aliases: an old name would need a value "
+                "to mirror",
+                at_key=True,
+            )
 
 
 def _adopts(value: Any) -> bool:

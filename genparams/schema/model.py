@@ -59,15 +59,25 @@ class Parameter:
     adopt: bool = False  # other code may declare it first; genparams takes it over
     # For a for_each parameter: the mapped groups its items name (their checks join its own).
     keys_entries_of: str = ""
+    optional: bool = False  # declared by type only: no value until an override or a set
 
     @property
     def annotation(self) -> str:
-        return self.type.annotation
+        return f"{self.type.annotation} | None" if self.optional else self.type.annotation
+
+    @property
+    def default_words(self) -> str:
+        """What the parameter holds when nothing overrides it, in every output's words."""
+        if self.required:
+            return "Required."
+        if self.optional:
+            return "Not set by default."
+        return f"Default: {self.default!r}."
 
     @functools.cached_property
     def docstring(self) -> str:
         """Hover text in IDEs: description, unit, default and constraints."""
-        default = "Required." if self.required else f"Default: {self.default!r}."
+        default = self.default_words
         deprecated = f"Deprecated: {self.deprecated.rstrip('.')}." if self.deprecated else ""
         facts = (
             self.stated("type", "unit"),
@@ -122,6 +132,8 @@ class Parameter:
         options: list[tuple[str, Any]] = []
         if self.required:
             options.append(("required", True))
+        elif self.optional:
+            options.append(("optional", True))
         else:
             options.append(("default", self.default))
         for key, value, empty in (

@@ -56,6 +56,12 @@ def check_maps(
                 f"for_each names {target!r}, which is of type {param.type.name}; "
                 "it must name a string_array parameter",
             )
+        elif param.optional:
+            report(
+                where,
+                f"for_each names {target!r}, an optional parameter; the items that key "
+                "entries need a value: give it a default",
+            )
         elif param.default is not None:  # None: required, or a bad default already reported
             reason = naming.entry_key_problem(param.default, group.ros_name)
             if reason is not None:

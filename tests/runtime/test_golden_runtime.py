@@ -1,7 +1,7 @@
 """Every golden module, imported and declared on a real node, reads back its defaults.
 
-A case may hold ``overrides.yaml`` (relative name -> value) for its required
-parameters; those values must read back too.
+A case may hold ``overrides.yaml`` (relative name -> value) for its required and
+optional parameters; those values must read back too (an optional one not given: None).
 """
 
 from __future__ import annotations
@@ -36,7 +36,10 @@ def test_golden_module_declares_and_reads_back(ros: RosHarness, case: Path) -> N
     expected = {}
     for name, param in compiled.parameters.items():
         param_type = TYPES[param.spec.type]
-        source = given[name] if param.spec.required else param.spec.default
+        if param.spec.optional and name not in given:
+            expected[name] = None  # declared by type only: not set
+            continue
+        source = given[name] if param.spec.required or param.spec.optional else param.spec.default
         expected[name] = param_type.coerce_default(source)
     for name, entry in expand(compiled, expected).items():  # entries of mapped groups
         expected[name] = TYPES[entry.spec.type].coerce_default(entry.spec.default)
