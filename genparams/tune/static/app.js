@@ -50,7 +50,7 @@ function renderDiff() {
   const { byName, values } = page.view.known;
   const rows = [];
   for (const [name, meta] of byName) {
-    if (!meta.schema || meta.required || !values.has(name)) continue;
+    if (!meta.schema || meta.required || meta.optional || !values.has(name)) continue;
     if (JSON.stringify(meta.default) !== JSON.stringify(values.get(name)))
       rows.push([name, meta.default, values.get(name)]);
   }
@@ -121,7 +121,7 @@ function renderNode(data) {
   const rowFor = (name) => {
     const meta = known.byName.get(name);
     const label = meta.key !== undefined ? meta.name : name.slice(namespaceOf(name).length + (namespaceOf(name) ? 1 : 0));
-    return row(meta, name, label, known.values.get(name), { ...handlers, hasDefault: meta.schema && !meta.required });
+    return row(meta, name, label, known.values.get(name), { ...handlers, hasDefault: meta.schema && !meta.required && !meta.optional });
   };
   const sections = new Map();
   for (const name of [...known.values.keys()].sort()) {
