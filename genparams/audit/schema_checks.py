@@ -92,14 +92,13 @@ def check_value(
 ) -> list[Finding]:
     name = compiled.name
     spec = compiled.spec
-    if spec.optional and raw is None:  # declared by type only and not set: nothing to check
-        typed[name] = None
-        return []
     try:
-        value = compiled.type.from_ros(raw)
+        value = compiled.from_ros(raw)
     except ValueError as exc:
         return [Finding(node, VIOLATION, name, f"{exc}", compiled.spec.type, raw)]
     typed[name] = value
+    if value is None:  # an optional parameter not set: nothing to check
+        return []
     found = []
     for check in compiled.checks:
         if not importable(check):

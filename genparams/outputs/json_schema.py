@@ -241,13 +241,17 @@ def parameter_schema(parameter: Parameter) -> dict[str, Any]:
     """The value schema of one parameter, with hover text and its default."""
     param_type = parameter.type
     kind = param_type.scalar_kind
-    if param_type.is_array:
+    result: dict[str, Any]
+    if param_type.is_dynamic:  # any of the nine types: a scalar, or a list of scalars
+        scalars = [_JSON_TYPES[k] for k in ("bool", "int", "double", "string")]
+        result = {"type": [*scalars, "array"], "items": {"type": scalars}}
+    elif param_type.is_array:
         items: dict[str, Any] = (
             {"type": "integer", "minimum": 0, "maximum": 255}
             if kind == "byte"
             else {"type": _JSON_TYPES[kind]}
         )
-        result: dict[str, Any] = {"type": "array", "items": items}
+        result = {"type": "array", "items": items}
     else:
         result = {"type": _JSON_TYPES[kind]}
     for check in parameter.compiled.checks:

@@ -14,12 +14,13 @@ from typing import TYPE_CHECKING, Any, Generic, TypeVar, cast
 
 from rcl_interfaces.msg import ParameterType
 from rclpy.node import Node
-from rclpy.parameter import Parameter, parameter_value_to_python
+from rclpy.parameter import parameter_value_to_python
 from rclpy.parameter_client import AsyncParameterClient
 from rclpy.task import Future
 
 from genparams.runtime.binding import check_prefix
 from genparams.runtime.changes import Changes
+from genparams.runtime.declaring import ros_parameter
 from genparams.runtime.entries import expand, instantiate, template_keys
 from genparams.runtime.errors import RemoteParameterError, RemoteSetError
 from genparams.runtime.naming import is_entry_key, join_prefix, strip_prefix
@@ -126,7 +127,7 @@ class RemoteParams(Generic[P]):
                 for name, full, message in zip(names, full_names, messages, strict=True):
                     try:
                         python = parameter_value_to_python(message)
-                        values[name] = parameters[name].type.from_ros(python)
+                        values[name] = parameters[name].from_ros(python)
                     except ValueTypeError as exc:
                         problems.append(f"{full}: {exc}")
                 if problems:
@@ -201,15 +202,10 @@ class RemoteParams(Generic[P]):
         if reasons:
             result.set_exception(RemoteSetError("; ".join(reasons), sent=False))
             return result
-        parameters = []
-        for param, value in typed.values():
-            parameters.append(
-                Parameter(
-                    self.full_name(param.name),
-                    Parameter.Type(param.type.ros_type),
-                    param.type.to_ros(value),
-                )
-            )
+        parameters = [
+            ros_parameter(param, self.full_name(param.name), value)
+            for param, value in typed.values()
+        ]
 
         def answered(response_future: Future) -> None:
             try:

@@ -112,6 +112,12 @@ class CompiledParam:
     def name(self) -> str:
         return self.spec.name
 
+    def from_ros(self, value: Any) -> Any:
+        """A ROS value in typed-view form; None (NOT_SET) stays None for an optional parameter."""
+        if value is None and self.spec.optional:
+            return None
+        return self.type.from_ros(value)
+
     def check(self, value: Any) -> str | None:
         """The first rule ``value`` breaks, as a reason, or None."""
         for check in self.checks:

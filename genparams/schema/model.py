@@ -312,6 +312,11 @@ class Schema:
         return bool(self.maps)
 
     @property
+    def uses_any(self) -> bool:
+        """Whether a parameter is of type ``any``, annotated with the runtime's RosValue."""
+        return any(p.type.is_dynamic for p in self.parameters)
+
+    @property
     def uses_entries_by_key(self) -> bool:
         """Whether a generated class reads in-place entries by key (``__getitem__``)."""
         return any(g.entries_group is not None for g in (self.root, *self.nested_groups))

@@ -101,12 +101,10 @@ def test_a_real_node_describes_the_same_constraints(ros: RosHarness, case: Path)
     types = {p.ros_name: TYPES[p.type.name] for p in schema.parameters}
     node = ros.node(
         parameter_overrides=[
-            RosParameter(
-                name,
-                RosParameter.Type(types[name].ros_type),
-                types[name].to_ros(types[name].coerce_default(value)),
-            )
+            RosParameter(name, RosParameter.Type(kind.ros_type), kind.to_ros(typed))
             for name, value in given.items()
+            for typed in [types[name].coerce_default(value)]
+            for kind in [types[name].of_value(typed)]  # a value of type any: its own type
         ]
     )
     cls.declare(node)

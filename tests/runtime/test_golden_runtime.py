@@ -11,8 +11,8 @@ from typing import Any
 
 import pytest
 import yaml
-from rclpy.parameter import Parameter
 
+from genparams.runtime.declaring import ros_parameter
 from genparams.runtime.entries import expand
 from genparams.runtime.spec import compile_schema
 from genparams.runtime.types import TYPES
@@ -43,14 +43,7 @@ def test_golden_module_declares_and_reads_back(ros: RosHarness, case: Path) -> N
         expected[name] = param_type.coerce_default(source)
     for name, entry in expand(compiled, expected).items():  # entries of mapped groups
         expected[name] = TYPES[entry.spec.type].coerce_default(entry.spec.default)
-    parameters = [
-        Parameter(
-            name,
-            Parameter.Type(TYPES[compiled.parameters[name].spec.type].ros_type),
-            TYPES[compiled.parameters[name].spec.type].to_ros(expected[name]),
-        )
-        for name in given
-    ]
+    parameters = [ros_parameter(compiled.parameters[name], name, expected[name]) for name in given]
     node = ros.node(parameter_overrides=parameters)
     cfg = cls.declare(node)
     assert mismatches(read_back(ros, node, cfg), expected) == {}

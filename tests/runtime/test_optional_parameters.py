@@ -6,16 +6,12 @@ The schema is the golden case tests/cases/optional.
 
 from __future__ import annotations
 
-import threading
 import types
 from collections.abc import Iterator
 from typing import Any
 
 import pytest
-import rclpy
-from rclpy.context import Context
 from rclpy.exceptions import ParameterUninitializedException
-from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
@@ -24,6 +20,7 @@ from genparams.audit.walk import audit
 from genparams.runtime import ParameterDeclarationError
 from genparams.tune.graph import Graph
 from tests.golden import CASES
+from tests.runtime.served_node import first_read, served
 from tests.support import RosHarness, import_file, unique_name
 
 OPTIONAL = ("frame_id", "timeout", "retries", "verbose", "topics", "mask", "limits.speed")
@@ -146,36 +143,20 @@ def test_remote_reads_not_set_as_none(ros: RosHarness, module: types.ModuleType)
 
 
 @pytest.fixture
-def served(module: types.ModuleType) -> Iterator[str]:
-    """A node declaring the class, spun in a context and thread of its own, as tune and
-    audit find nodes of other processes."""
-    context = Context()
-    rclpy.init(context=context)
-    name = unique_name("optional_target")
-    node = Node(name, context=context, cli_args=["--ros-args", "-p", "retries:=3"])
-    module.OptionalParams.declare(node)
-    executor = SingleThreadedExecutor(context=context)
-    executor.add_node(node)
-    thread = threading.Thread(target=executor.spin, daemon=True)
-    thread.start()
-    try:
-        yield f"/{name}"
-    finally:
-        executor.shutdown()
-        thread.join(timeout=10)
-        node.destroy_node()
-        rclpy.shutdown(context=context)
+def target(module: types.ModuleType) -> Iterator[str]:
+    with served(module.OptionalParams, ["-p", "retries:=3"]) as name:
+        yield name
 
 
-def test_tune_and_audit_read_not_set(served: str) -> None:
+def test_tune_and_audit_read_not_set(target: str) -> None:
     graph = Graph(unique_name("optional_graph"))
     try:
-        assert graph.services_ready(served, 10.0)
-        read = {p["name"]: p for p in graph.read_node(served, timeout=10.0)}
+        assert graph.services_ready(target, 10.0)
+        read = {p["name"]: p for p in first_read(graph, target)}
         assert (read["frame_id"]["type"], read["frame_id"]["value"]) == ("unset", None)
         assert (read["retries"]["type"], read["retries"]["value"]) == ("int", 3)
-        result = audit(graph, only=[served], settle=0.3, timeout=10.0)
+        result = audit(graph, only=[target], settle=0.3, timeout=10.0)
     finally:
         graph.close()
-    assert served in result.audited
+    assert target in result.audited
     assert [f for f in result.findings if f.kind == VIOLATION] == []

@@ -24,7 +24,10 @@ function metas(schema, parameters) {
     }
   }
   for (const p of parameters) {
-    if (byName.has(p.name)) continue;
+    const known = byName.get(p.name);
+    // A parameter of type any is edited in the type of its current value.
+    if (known?.type === "any" && p.type !== "unset") byName.set(p.name, { ...known, type: p.type });
+    if (known) continue;
     byName.set(p.name, { name: p.name, type: p.type, read_only: p.read_only, range: p.range,
       description: p.description, constraints: p.constraints ? [p.constraints] : [], schema: false });
   }
