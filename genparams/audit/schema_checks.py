@@ -62,8 +62,8 @@ def described_parameters(
         yield param["name"], param
     for group in described["maps"]:
         for key in values.get(group["for_each"]) or ():
-            for field in group["fields"]:
-                yield f"{group['path']}.{key}.{field['name']}", field
+            for field in group["fields"]:  # a field named "" is the entry itself (per item)
+                yield ".".join(p for p in (group["path"], key, field["name"]) if p), field
 
 
 def check_class(

@@ -112,6 +112,11 @@ def _documented_groups(group: Group) -> Iterator[Group]:
 
 
 def _mapped_note(group: Group) -> str:
+    if group.per_item:
+        return (
+            f"One parameter per item of {group.mapped_over}, named by the item; "
+            f"in the name below, {ENTRY_KEY} is the item."
+        )
     if not group.mapped_over:
         return ""
     return (

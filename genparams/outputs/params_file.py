@@ -145,6 +145,11 @@ def _group_entries(
             continue
         entries.append(Entry(indent, name, "", note, disabled=False))
         for item in items:
+            if child.per_item:  # the entry is the parameter itself, named by the item
+                entries.append(
+                    _parameter_entry(child.parameters[0], indent + _STEP, comments, item)
+                )
+                continue
             entries.append(Entry(indent + _STEP, key_text(item), "", (), disabled=False))
             entries.extend(_group_entries(child, indent + _STEP * 2, comments, keys))
     return entries
@@ -163,13 +168,20 @@ def _in_place_entries(
     entries = []
     for item in items:
         note = (f"Entry of {group.mapped_over} item {item}.",) if comments else ()
+        if group.per_item:  # the entry is the parameter itself, named by the item
+            entry = _parameter_entry(group.parameters[0], indent, comments, item)
+            entries.append(replace(entry, comments=(*note, *entry.comments)))
+            continue
         entries.append(Entry(indent, key_text(item), "", note, disabled=False))
         entries.extend(_group_entries(group, indent + _STEP, comments, keys))
     return entries
 
 
-def _parameter_entry(parameter: Parameter, indent: str, comments: bool) -> Entry:
-    key = key_text(parameter.path[-1])
+def _parameter_entry(
+    parameter: Parameter, indent: str, comments: bool, item: str | None = None
+) -> Entry:
+    """A parameter's entry; ``item`` names the entry of a per-item parameter."""
+    key = key_text(parameter.path[-1] if item is None else item)
     notes = parameter_comment(parameter) if comments else ()
     if parameter.required:
         why = (f"Required {parameter.type.name}: no default; the node does not start without it.",)

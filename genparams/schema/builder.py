@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Collection, Iterable, Iterator
+from dataclasses import replace
 from typing import Any
 
 from genparams.runtime import naming
@@ -138,6 +139,8 @@ class _ModelBuilder:
                         location=self.document.key_location(key_path),
                     )
                 )
+            elif isinstance(value, dict) and "type" in value and FOR_EACH in value:
+                groups.append(self.per_item(value, key_path, child_path, child_attribute))
             elif isinstance(value, dict) and "type" in value:
                 parameters.append(self.parameter(value, key_path, child_path, child_attribute))
             elif isinstance(value, dict):
@@ -161,8 +164,35 @@ class _ModelBuilder:
             self.mapped.append((group, doc_path))
         return group
 
+    def per_item(
+        self,
+        leaf: dict[str, Any],
+        doc_path: Path,
+        path: tuple[str, ...],
+        attribute: str,
+        *,
+        in_place: bool = False,
+    ) -> Group:
+        """A leaf with ``for_each``: one parameter per item, named by the item itself."""
+        item = self.parameter(leaf, doc_path, (*path, naming.ENTRY_KEY), naming.ENTRY_KEY)
+        item = replace(item, per_item_of=leaf[FOR_EACH])
+        group = Group(
+            ros_name=".".join(path),
+            path=path,
+            attribute=attribute,
+            class_name="",
+            parameters=(item,),
+            groups=(),
+            mapped_over=leaf[FOR_EACH],
+            in_place=in_place,
+            per_item=True,
+        )
+        self.mapped.append((group, doc_path))
+        return group
+
     def entries_in_place(self, value: Any, key_path: Path, path: tuple[str, ...]) -> Group | None:
-        """A ``"*"`` key: a mapped group whose entries sit in this namespace, by key."""
+        """A ``"*"`` key: a mapped group whose entries sit in this namespace, by key, or,
+        with ``type:``, one parameter per item, each named by its item."""
         if not (isinstance(value, dict) and FOR_EACH in value):
             self.problem(
                 key_path,
@@ -171,9 +201,11 @@ class _ModelBuilder:
                 at_key=True,
             )
             return None
-        if self.skipped(key_path, whole_tree=False):
+        if self.skipped(key_path, whole_tree="type" in value):
             self.unbuilt.append((*path, naming.ENTRY_KEY))
             return None
+        if "type" in value:
+            return self.per_item(value, key_path, path, "", in_place=True)
         words = "".join(naming.pascal_case(p) for p in path if p != naming.ENTRY_KEY)
         depth = path.count(naming.ENTRY_KEY) + 1  # "Entry" once per map level
         entry_class = self.unique_class_name(f"{words}{'Entry' * depth}Group")

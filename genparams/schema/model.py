@@ -60,6 +60,7 @@ class Parameter:
     # For a for_each parameter: the mapped groups its items name (their checks join its own).
     keys_entries_of: str = ""
     optional: bool = False  # declared by type only: no value until an override or a set
+    per_item_of: str = ""  # a per-item parameter (``offsets.*``): the list naming its entries
 
     @property
     def annotation(self) -> str:
@@ -86,7 +87,13 @@ class Parameter:
             deprecated,
             self.stated("old_names"),
         )
-        return f"{self.description or self.ros_name}\n\n" + " ".join(f for f in facts if f)
+        head = self.description or self.ros_name
+        if self.per_item_of:
+            where = self.ros_name.replace(ENTRY_KEY, "<item>")
+            each = f"One parameter per item of {self.per_item_of}: {where}."
+            head = f"{self.description or where}\n\n{each}"
+            return f"{head} " + " ".join(f for f in facts if f)
+        return f"{head}\n\n" + " ".join(f for f in facts if f)
 
     def stated(self, *facts: str) -> str:
         """The named facts in the words every output states them in (docstrings, comments
@@ -197,6 +204,14 @@ class Group:
     mapped_over: str = ""  # ROS name of the string_array parameter whose items key the entries
     open_namespaces: tuple[OpenNamespace, ...] = ()
     in_place: bool = False  # a "*" group: path and ros_name are its parent's
+    # A leaf with for_each: one parameter per item, named by the item (``offsets.<item>``);
+    # its one parameter is the template (``offsets.*``), and it has no class of its own.
+    per_item: bool = False
+
+    @property
+    def entry_annotation(self) -> str:
+        """The type of one entry: the entry class, or the value of a per-item parameter."""
+        return self.parameters[0].annotation if self.per_item else self.class_name
 
     @property
     def entries_group(self) -> Group | None:
@@ -211,10 +226,12 @@ class Group:
     @property
     def annotation(self) -> str:
         """The type of this group as an attribute of its parent."""
-        return f"_Mapping[str, {self.class_name}]" if self.mapped_over else self.class_name
+        return f"_Mapping[str, {self.entry_annotation}]" if self.mapped_over else self.class_name
 
     @property
     def field_docstring(self) -> str:
+        if self.per_item:
+            return self.parameters[0].docstring
         if self.mapped_over:
             return f"Mapped group {self.ros_name}: one entry per item of {self.mapped_over}."
         return f"Namespace {self.ros_name}."
@@ -243,7 +260,8 @@ class Group:
         return ("_map", *names) if self.entries_group is not None else names  # ruff's order
 
     def walk_groups(self) -> Iterator[Group]:
-        """Every group below this one, children before parents (definition order)."""
+        """Every group below this one, children before parents (definition order);
+        per-item parameters (a leaf with for_each) included."""
         for group in self.groups:
             yield from group.walk_groups()
             yield group
@@ -287,7 +305,8 @@ class Schema:
 
     @property
     def nested_groups(self) -> tuple[Group, ...]:
-        return tuple(self.root.walk_groups())
+        """The groups that are classes: per-item parameters have none."""
+        return tuple(g for g in self.root.walk_groups() if not g.per_item)
 
     @property
     def parameters(self) -> tuple[Parameter, ...]:
@@ -305,7 +324,7 @@ class Schema:
     @property
     def maps(self) -> tuple[tuple[str, str], ...]:
         """(mapped group, its for_each parameter), for the runtime."""
-        return tuple((g.ros_name, g.mapped_over) for g in self.nested_groups if g.mapped_over)
+        return tuple((g.ros_name, g.mapped_over) for g in self.root.walk_groups() if g.mapped_over)
 
     @property
     def uses_mapping(self) -> bool:

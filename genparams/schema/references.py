@@ -42,7 +42,8 @@ def check_maps(
     ``unbuilt``: whether a name was left out for a problem of its own, already reported.
     """
     fixed = {p.ros_name: p for p in root.walk_parameters() if naming.ENTRY_KEY not in p.path}
-    map_paths = [(group.path, group.ros_name) for group, _ in mapped]
+    # In-place maps are left out: their entries sit beside fixed names, none "inside" them.
+    map_paths = [(group.path, group.ros_name) for group, _ in mapped if not group.in_place]
     for group, doc_path in mapped:
         where = (*doc_path, "for_each")
         target = group.mapped_over

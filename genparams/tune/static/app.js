@@ -20,7 +20,7 @@ function metas(schema, parameters) {
   for (const group of maps) {
     for (const key of values.get(group.for_each) || []) {
       for (const field of group.fields)
-        byName.set(`${group.path}.${key}.${field.name}`, { ...field, schema: true, mapped: group.path, key });
+        byName.set([group.path, key, field.name].filter(Boolean).join("."), { ...field, schema: true, mapped: group.path, key });
     }
   }
   for (const p of parameters) {
@@ -123,7 +123,7 @@ function renderNode(data) {
   const handlers = { readOnly: page.readOnly, onEdit, onReset };
   const rowFor = (name) => {
     const meta = known.byName.get(name);
-    const label = meta.key !== undefined ? meta.name : name.slice(namespaceOf(name).length + (namespaceOf(name) ? 1 : 0));
+    const label = meta.key !== undefined ? meta.name || meta.key : name.slice(namespaceOf(name).length + (namespaceOf(name) ? 1 : 0));
     return row(meta, name, label, known.values.get(name), { ...handlers, hasDefault: meta.schema && !meta.required && !meta.optional });
   };
   const sections = new Map();
@@ -140,7 +140,7 @@ function renderNode(data) {
   for (const group of known.maps) {
     const keys = known.values.get(group.for_each) || [];
     builders.push([keys.length * group.fields.length, () => mapGroup(group, keys,
-      (key) => group.fields.map((f) => rowFor(`${group.path}.${key}.${f.name}`)),
+      (key) => group.fields.map((f) => rowFor([group.path, key, f.name].filter(Boolean).join("."))),
       { readOnly: page.readOnly,
         onAddKey: (g, key) => setKeys(g, [...(known.values.get(g.for_each) || []), key]),
         onRemoveKey: (g, key) => setKeys(g, (known.values.get(g.for_each) || []).filter((k) => k !== key)) })]);
