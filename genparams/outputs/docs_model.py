@@ -33,6 +33,7 @@ class ParameterDoc:
     deprecated: str  # "" unless deprecated: what to use instead
     old_names: str = ""  # "" unless renamed: its old names, still accepted
     optional: bool = False  # declared by type only: not set until given a value
+    condition: str = ""  # "Declared only when mode is 'advanced'", or ""
 
 
 @dataclass(frozen=True)
@@ -156,4 +157,5 @@ def parameter_doc(parameter: Parameter) -> ParameterDoc:
         deprecated=parameter.deprecated,
         old_names=", ".join(parameter.aliases),
         optional=parameter.optional,
+        condition=parameter.condition_words,
     )

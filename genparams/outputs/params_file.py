@@ -216,8 +216,8 @@ def _reads_back(parameter: Parameter) -> bool:
 
 
 def parameter_comment(parameter: Parameter) -> tuple[str, ...]:
-    """Description, then unit, constraints, read-only and deprecation in one line."""
-    facts = [parameter.stated("unit", "constraints", "read_only")]
+    """Description, then condition, unit, constraints, read-only and deprecation in one line."""
+    facts = [parameter.stated("condition", "unit", "constraints", "read_only")]
     if parameter.deprecated:
         facts.append(f"Deprecated: {parameter.deprecated}")
     lines = comment_lines(parameter.description)

@@ -117,7 +117,8 @@ class Binding(Generic[P]):
             [(ros_parameter(p, n, by_full_name[n]), descriptor_for(p, n)) for n, p in owned.items()]
             + aliases.declarations(owned, by_full_name),
         )
-        report_overrides(notices, parameters, reader.given, reader.renamed, full)
+        given = [name for name in reader.given if name in parameters]  # conditions that hold
+        report_overrides(notices, parameters, given, reader.renamed, full)
 
         binding: Binding[P] = cls(node, prefix, owned)
         binding.sets = sets

@@ -89,19 +89,26 @@ class RemoteParams(Generic[P]):
 
     def get(self) -> TypedFuture[P]:
         """Every parameter of the schema as a frozen snapshot: the fixed ones in one request,
-        then (for mapped groups) the entries their key lists name, in a second."""
+        then (for mapped groups) the entries their key lists name and the parameters whose
+        condition (``when``) holds, in a second."""
         result: TypedFuture[P] = TypedFuture()
+        parameters = self.compiled.parameters
+        conditional = {n: p for n, p in parameters.items() if p.spec.when}
+        fixed = {n: p for n, p in parameters.items() if n not in conditional}
 
         def fixed_read(values: dict[str, Any]) -> None:
-            entries = expand(self.compiled, values) if self.compiled.templates else {}
-            if not entries:
+            more = {n: p for n, p in conditional.items() if p.spec.declared_with(values)}
+            values.update((n, None) for n in conditional if n not in more)
+            if self.compiled.templates:
+                more.update(expand(self.compiled, values))
+            if not more:
                 result.set_result(self.snapshot(values))
                 return
             self.read(
-                entries, lambda more: result.set_result(self.snapshot({**values, **more})), result
+                more, lambda extra: result.set_result(self.snapshot({**values, **extra})), result
             )
 
-        self.read(self.compiled.parameters, fixed_read, result)
+        self.read(fixed, fixed_read, result)
         return result
 
     def read(
@@ -120,7 +127,10 @@ class RemoteParams(Generic[P]):
                 if len(messages) != len(names):
                     # The service answers nothing at all when one name is not declared, or
                     # not set (an optional parameter): the types tell which.
-                    self.client.get_parameter_types(full_names, typed)
+                    if any(param.spec.optional for param in parameters.values()):
+                        self.client.get_parameter_types(full_names, typed)
+                    else:
+                        self.client.list_parameters([], 0, report_missing)
                     return
                 values: dict[str, Any] = {}
                 problems: list[str] = []

@@ -71,6 +71,8 @@ def describe_parameter(param: CompiledParam, name: str) -> dict[str, Any]:
         described["ros_range"] = True
     if spec.optional:  # only when true: messages of other schemas stay as they were
         described["optional"] = True
+    if spec.when:
+        described["when"] = {name: json_value(values) for name, values in spec.when}
     return described
 
 

@@ -45,6 +45,29 @@ class ParamSpec:
     # Declared by type only (rclpy: declare_parameter(name, Parameter.Type.X)): the value is
     # None, NOT_SET on the node, until an override or a set gives it one.
     optional: bool = False
+    # Declared only when each named parameter holds one of its values at declaration:
+    # (("mode", ("advanced",)),). Decided once, as hand-written nodes decide at startup.
+    when: tuple[tuple[str, tuple[Any, ...]], ...] = ()
+
+    def declared_with(self, values: Mapping[str, Any]) -> bool:
+        """Whether the condition (``when``) holds for ``values``, by relative name."""
+        return all(values.get(name) in allowed for name, allowed in self.when)
+
+    @property
+    def condition_text(self) -> str:
+        """``when`` in words: "declared only when mode is 'advanced'"."""
+        parts = [
+            f"{name} is {' or '.join(_value_words(value) for value in allowed)}"
+            for name, allowed in self.when
+        ]
+        return "declared only when " + " and ".join(parts) if parts else ""
+
+
+def _value_words(value: Any) -> str:
+    """A condition's value as a params file spells it: true, 2.5, 'advanced'."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    return repr(value)
 
 
 @dataclass(frozen=True)

@@ -19,7 +19,7 @@ from genparams.schema.errors import SchemaError, SchemaProblem
 from genparams.schema.leaf_checks import LeafChecks
 from genparams.schema.loader import LoadedDocument, Path, dotted
 from genparams.schema.model import Group, OpenNamespace, Parameter, Schema, with_entry_keys
-from genparams.schema.references import check_aliases, check_maps
+from genparams.schema.references import check_aliases, check_conditions, check_maps
 from genparams.schema.rule_builder import build_rules
 
 FOR_EACH = "for_each"
@@ -62,6 +62,7 @@ class _ModelBuilder:
         self.leaf_paths: dict[str, Path] = {}  # parameter ROS name -> its document path
         self.mapped: list[tuple[Group, Path]] = []
         self.aliases: list[tuple[str, Path, Parameter]] = []  # (alias, where, its parameter)
+        self.conditional: list[tuple[Parameter, Path]] = []  # parameters with when:
         self.unbuilt: list[tuple[str, ...]] = []  # paths of names left out for known problems
         self.leaf_checks = LeafChecks(self.problem)
 
@@ -77,6 +78,7 @@ class _ModelBuilder:
         root = self.group(data["parameters"], ("parameters",), (), "", class_name)
         check_maps(root, self.mapped, self.leaf_paths, self.problem, self.is_unbuilt)
         check_aliases(root, self.aliases, self.problem)
+        check_conditions(root, self.conditional, self.problem, self.is_unbuilt)
         rules, rule_problems = build_rules(self.document, root.walk_parameters(), self.is_unbuilt)
         self.problems.extend(rule_problems)
         root = with_entry_keys(root)
@@ -317,6 +319,10 @@ class _ModelBuilder:
             configure_only=leaf.get("configure_only", False),
             adopt=leaf.get("adopt", False),
             optional=optional,
+            when=tuple(
+                (str(name), tuple(value) if isinstance(value, list) else (value,))
+                for name, value in leaf.get("when", {}).items()
+            ),
         )
         # The runtime's own checks, compiled once: they judge the default here, and the
         # model keeps them to word each constraint in every output.
@@ -342,6 +348,8 @@ class _ModelBuilder:
             )
         if optional:
             self.check_optional(parameter, doc_path)
+        if parameter.when:
+            self.conditional.append((parameter, doc_path))
         self.leaf_paths[parameter.ros_name] = doc_path
         for index, alias in enumerate(parameter.aliases):
             self.aliases.append((alias, (*doc_path, "aliases", index), parameter))

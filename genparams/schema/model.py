@@ -61,10 +61,20 @@ class Parameter:
     keys_entries_of: str = ""
     optional: bool = False  # declared by type only: no value until an override or a set
     per_item_of: str = ""  # a per-item parameter (``offsets.*``): the list naming its entries
+    # Declared only when each named parameter holds one of its values: (("mode", ("a",)),)
+    when: tuple[tuple[str, tuple[Any, ...]], ...] = ()
 
     @property
     def annotation(self) -> str:
-        return f"{self.type.annotation} | None" if self.optional else self.type.annotation
+        if self.optional or self.when:  # not set, or not declared: None
+            return f"{self.type.annotation} | None"
+        return self.type.annotation
+
+    @property
+    def condition_words(self) -> str:
+        """``when`` as a sentence: "Declared only when mode is 'advanced'"; "" without one."""
+        text = self.runtime_spec.condition_text
+        return text[:1].upper() + text[1:]
 
     @property
     def default_words(self) -> str:
@@ -83,7 +93,7 @@ class Parameter:
         facts = (
             self.stated("type", "unit"),
             default,
-            self.stated("read_only", "constraints"),
+            self.stated("condition", "read_only", "constraints"),
             deprecated,
             self.stated("old_names"),
         )
@@ -107,6 +117,7 @@ class Parameter:
             "type": f"Type: {self.type.name}.",
             "unit": f"Unit: {self.unit}." if self.unit else "",
             "read_only": "Read-only." if self.read_only else "",
+            "condition": f"{self.condition_words}." if self.when else "",
             "constraints": f"Constraints: {self.all_constraints_text}." if self.constraints else "",
             "old_names": f"Old names: {', '.join(self.aliases)}." if self.aliases else "",
         }
@@ -155,6 +166,7 @@ class Parameter:
             ("aliases", self.aliases, ()),
             ("configure_only", self.configure_only, False),
             ("adopt", self.adopt, False),
+            ("when", self.when, ()),
         ):
             if value != empty:
                 options.append((key, value))

@@ -15,6 +15,7 @@ import yaml
 from genparams.runtime.declaring import ros_parameter
 from genparams.runtime.entries import expand
 from genparams.runtime.spec import compile_schema
+from genparams.runtime.tree import get_path
 from genparams.runtime.types import TYPES
 from tests.golden import runtime_cases
 from tests.readback import mismatches, params_class, read_back
@@ -39,12 +40,19 @@ def test_golden_module_declares_and_reads_back(ros: RosHarness, case: Path) -> N
         if param.spec.optional and name not in given:
             expected[name] = None  # declared by type only: not set
             continue
-        source = given[name] if param.spec.required or param.spec.optional else param.spec.default
+        source = given[name] if name in given else param.spec.default
         expected[name] = param_type.coerce_default(source)
     for name, entry in expand(compiled, expected).items():  # entries of mapped groups
         expected[name] = TYPES[entry.spec.type].coerce_default(entry.spec.default)
     parameters = [ros_parameter(compiled.parameters[name], name, expected[name]) for name in given]
     node = ros.node(parameter_overrides=parameters)
     cfg = cls.declare(node)
-    assert mismatches(read_back(ros, node, cfg), expected) == {}
+    # A parameter whose condition (when) does not hold is not declared, and reads None.
+    left_out = [n for n, p in compiled.parameters.items() if not p.spec.declared_with(expected)]
+    assert [get_path(cfg, compiled.parameters[n].attribute_path) for n in left_out] == [
+        None for _ in left_out
+    ]
+    assert not any(node.has_parameter(name) for name in left_out)
+    declared = {n: v for n, v in expected.items() if n not in left_out}
+    assert mismatches(read_back(ros, node, cfg), declared) == {}
     assert cls.defaults(given).to_dict() == cfg.to_dict()
