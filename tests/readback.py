@@ -16,7 +16,7 @@ from genparams.runtime import Params
 from genparams.runtime.naming import join_prefix
 from genparams.runtime.spec import compile_schema
 from genparams.runtime.tree import get_path
-from genparams.runtime.types import TYPES
+from genparams.runtime.types import TYPES, ParamType
 from tests.support import RosHarness, ServiceClient
 
 
@@ -63,14 +63,22 @@ def read_back(
     full = [join_prefix(prefix, name) for name in names]
     client = client or ros.client(node)
     served = client.get(*full) if full else []
+    if len(served) != len(full):
+        # The service answers nothing when any name is not set (an optional parameter):
+        # ask name by name, an empty answer meaning "not set".
+        served = [next(iter(client.get(name)), None) for name in full]
     out = {}
     for name, full_name, service_value in zip(names, full, served, strict=True):
         param = parameters[name]
         param_type = TYPES[param.spec.type]
+
+        def typed(value: Any, param_type: ParamType = param_type, param: Any = param) -> Any:
+            return None if param.spec.optional and value is None else param_type.from_ros(value)
+
         out[name] = (
             get_path(cfg, param.attribute_path),
-            param_type.from_ros(node.get_parameter(full_name).value),
-            param_type.from_ros(service_value),
+            typed(node.get_parameter_or(full_name).value),
+            typed(service_value),
         )
     return out
 

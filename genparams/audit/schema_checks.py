@@ -36,8 +36,8 @@ def described_parameters(
         yield param["name"], param
     for group in described["maps"]:
         for key in values.get(group["for_each"]) or ():
-            for field in group["fields"]:
-                yield f"{group['path']}.{key}.{field['name']}", field
+            for field in group["fields"]:  # a field named "" is the entry itself (per item)
+                yield ".".join(p for p in (group["path"], key, field["name"]) if p), field
 
 
 def check_class(
@@ -48,6 +48,10 @@ def check_class(
     for name, param_json in described_parameters(described, values):
         spec = param_from_json(param_json, name)
         compiled = compile_param(spec)
+        if name not in values and (spec.optional or "when" in param_json):
+            # Not set (the services read it as "unset"), or left out by its condition.
+            typed[name] = None
+            continue
         if name not in values:
             findings.append(
                 Finding(node, VIOLATION, name, "declared in the schema, not on the node")
@@ -62,11 +66,14 @@ def check_value(
     node: str, compiled: CompiledParam, raw: Any, typed: dict[str, Any]
 ) -> list[Finding]:
     name = compiled.name
+    spec = compiled.spec
     try:
-        value = compiled.type.from_ros(raw)
+        value = compiled.from_ros(raw)
     except ValueError as exc:
         return [Finding(node, VIOLATION, name, f"{exc}", compiled.spec.type, raw)]
     typed[name] = value
+    if value is None:  # an optional parameter not set: nothing to check
+        return []
     found = []
     for check in compiled.checks:
         if not importable(check):
@@ -75,8 +82,7 @@ def check_value(
         reason = check(value)
         if reason is not None:
             found.append(Finding(node, VIOLATION, name, reason, check.describe(), raw))
-    spec = compiled.spec
-    if not spec.required and value != spec.default:
+    if not spec.required and not spec.optional and value != spec.default:
         found.append(
             Finding(node, DRIFT_DEFAULT, name, "differs from the schema default", spec.default, raw)
         )

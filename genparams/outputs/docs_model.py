@@ -24,7 +24,7 @@ FORMATS = ("markdown", "rst")
 class ParameterDoc:
     name: str  # full dotted ROS name
     type_name: str
-    default: str  # as written in a params file; "" when required
+    default: str  # as written in a params file; "" when required or optional
     unit: str
     constraints: tuple[str, ...]  # plain words: range and step, choices, every validator
     description: str
@@ -32,6 +32,8 @@ class ParameterDoc:
     read_only: bool
     deprecated: str  # "" unless deprecated: what to use instead
     old_names: str = ""  # "" unless renamed: its old names, still accepted
+    optional: bool = False  # declared by type only: not set until given a value
+    condition: str = ""  # "Declared only when mode is 'advanced'", or ""
 
 
 @dataclass(frozen=True)
@@ -111,6 +113,11 @@ def _documented_groups(group: Group) -> Iterator[Group]:
 
 
 def _mapped_note(group: Group) -> str:
+    if group.per_item:
+        return (
+            f"One parameter per item of {group.mapped_over}, named by the item; "
+            f"in the name below, {ENTRY_KEY} is the item."
+        )
     if not group.mapped_over:
         return ""
     return (
@@ -139,7 +146,9 @@ def parameter_doc(parameter: Parameter) -> ParameterDoc:
     return ParameterDoc(
         name=parameter.ros_name,
         type_name=parameter.type.name,
-        default="" if parameter.required else value_text(parameter.default, parameter.type),
+        default=""
+        if parameter.required or parameter.optional
+        else value_text(parameter.default, parameter.type),
         unit=parameter.unit,
         constraints=parameter.constraints,
         description=parameter.description,
@@ -147,4 +156,6 @@ def parameter_doc(parameter: Parameter) -> ParameterDoc:
         read_only=parameter.read_only,
         deprecated=parameter.deprecated,
         old_names=", ".join(parameter.aliases),
+        optional=parameter.optional,
+        condition=parameter.condition_words,
     )

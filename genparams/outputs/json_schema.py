@@ -21,6 +21,7 @@ from genparams.outputs.schema_paths import (
     descendants,
     dotted_pattern,
     fixed_names,
+    names_beside_entries,
     open_descendants,
 )
 from genparams.outputs.yaml_text import value_text
@@ -69,7 +70,8 @@ def params_file_schema(schema: Schema, *, partial: bool = False) -> dict[str, An
     }
     old_names = _OldNames(schema)
     for group in _all_groups(schema.root):
-        definitions[_group_name(group)] = _group_schema(group, old_names, required=not partial)
+        if not group.per_item:  # its entries are values of its one parameter
+            definitions[_group_name(group)] = _group_schema(group, old_names, required=not partial)
         if group.mapped_over and not group.in_place:
             definitions[_map_name(group)] = _map_schema(group)
     for parameter in schema.parameters:
@@ -111,6 +113,13 @@ def _map_name(group: Group) -> str:
 
 def _map_schema(group: Group) -> dict[str, Any]:
     """A mapped group: entries keyed by items of its for_each parameter, nested or dotted."""
+    if group.per_item:  # each entry is a value of the one parameter, named by its item
+        return {
+            "type": "object",
+            "description": f"One parameter per item of {group.mapped_over}, named by the item.",
+            "patternProperties": {ENTRY_KEY_PATTERN: {"$ref": _parameter_ref(group.parameters[0])}},
+            "additionalProperties": False,
+        }
     patterns = {ENTRY_KEY_PATTERN: {"$ref": _group_ref(group)}}
     for path, item in descendants(group):
         patterns[dotted_pattern((ENTRY_KEY, *path))] = {"$ref": _ref(item, path)}
@@ -137,7 +146,8 @@ def _group_schema(group: Group, old_names: _OldNames, *, required: bool) -> dict
         key = ".".join(path)
         ref = {"$ref": _ref(item, path)}
         if ENTRY_KEY in path:
-            patterns[dotted_pattern(path, beside)] = ref
+            names = beside if path[0] == ENTRY_KEY else names_beside_entries(group, path)
+            patterns[dotted_pattern(path, names)] = ref
             continue
         properties[key] = ref
         if isinstance(item, Group) or not (required and item.required):
@@ -241,13 +251,17 @@ def parameter_schema(parameter: Parameter) -> dict[str, Any]:
     """The value schema of one parameter, with hover text and its default."""
     param_type = parameter.type
     kind = param_type.scalar_kind
-    if param_type.is_array:
+    result: dict[str, Any]
+    if param_type.is_dynamic:  # any of the nine types: a scalar, or a list of scalars
+        scalars = [_JSON_TYPES[k] for k in ("bool", "int", "double", "string")]
+        result = {"type": [*scalars, "array"], "items": {"type": scalars}}
+    elif param_type.is_array:
         items: dict[str, Any] = (
             {"type": "integer", "minimum": 0, "maximum": 255}
             if kind == "byte"
             else {"type": _JSON_TYPES[kind]}
         )
-        result: dict[str, Any] = {"type": "array", "items": items}
+        result = {"type": "array", "items": items}
     else:
         result = {"type": _JSON_TYPES[kind]}
     for check in parameter.compiled.checks:
@@ -271,6 +285,8 @@ def hover_text(parameter: Parameter) -> str:
         facts.append("Write a decimal point (30.0, not 30): ROS does not convert.")
     if parameter.required:
         facts.append("Required: no default; the node does not start without it.")
+    elif parameter.optional:
+        facts.append("Optional: not set by default; the node tests whether it is.")
     else:
         facts.append(f"Default: {value_text(parameter.default, parameter.type)}.")
     lines.append(" ".join(facts))
@@ -278,7 +294,7 @@ def hover_text(parameter: Parameter) -> str:
 
 
 def _json_default(parameter: Parameter) -> Any:
-    if parameter.required:
+    if parameter.required or parameter.optional:
         return None
     value = parameter.default
     if isinstance(value, bytes):

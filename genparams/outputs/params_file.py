@@ -4,7 +4,8 @@ Loading the file with ``--params-file`` into a node that declares the generated
 class changes nothing: every default is spelled so ROS reads it back with its
 declared type (see yaml_text). Three kinds of parameter cannot be written and
 are left commented out, with the reason beside them: required parameters (they
-have no default; the node does not start until one is given), subnormal
+have no default; the node does not start until one is given), optional ones
+(not set until a file, an override or a set gives them a value), subnormal
 doubles (ROS reads them as strings) and empty lists (ROS reads ``[]`` as "not
 set", and rclpy refuses that on a node that declares parameters from
 overrides, so a file holding one would not load into every node).
@@ -144,6 +145,11 @@ def _group_entries(
             continue
         entries.append(Entry(indent, name, "", note, disabled=False))
         for item in items:
+            if child.per_item:  # the entry is the parameter itself, named by the item
+                entries.append(
+                    _parameter_entry(child.parameters[0], indent + _STEP, comments, item)
+                )
+                continue
             entries.append(Entry(indent + _STEP, key_text(item), "", (), disabled=False))
             entries.extend(_group_entries(child, indent + _STEP * 2, comments, keys))
     return entries
@@ -162,16 +168,27 @@ def _in_place_entries(
     entries = []
     for item in items:
         note = (f"Entry of {group.mapped_over} item {item}.",) if comments else ()
+        if group.per_item:  # the entry is the parameter itself, named by the item
+            entry = _parameter_entry(group.parameters[0], indent, comments, item)
+            entries.append(replace(entry, comments=(*note, *entry.comments)))
+            continue
         entries.append(Entry(indent, key_text(item), "", note, disabled=False))
         entries.extend(_group_entries(group, indent + _STEP, comments, keys))
     return entries
 
 
-def _parameter_entry(parameter: Parameter, indent: str, comments: bool) -> Entry:
-    key = key_text(parameter.path[-1])
+def _parameter_entry(
+    parameter: Parameter, indent: str, comments: bool, item: str | None = None
+) -> Entry:
+    """A parameter's entry; ``item`` names the entry of a per-item parameter."""
+    key = key_text(parameter.path[-1] if item is None else item)
     notes = parameter_comment(parameter) if comments else ()
     if parameter.required:
         why = (f"Required {parameter.type.name}: no default; the node does not start without it.",)
+        return Entry(indent, key, "", (*notes, *why), disabled=True)
+    if parameter.optional:
+        kind = parameter.type.name
+        why = (f"Optional {kind}: not set by default; the node tests whether it is.",)
         return Entry(indent, key, "", (*notes, *why), disabled=True)
     text = value_text(parameter.default, parameter.type)
     if parameter.type.is_array and not parameter.default:
@@ -199,8 +216,8 @@ def _reads_back(parameter: Parameter) -> bool:
 
 
 def parameter_comment(parameter: Parameter) -> tuple[str, ...]:
-    """Description, then unit, constraints, read-only and deprecation in one line."""
-    facts = [parameter.stated("unit", "constraints", "read_only")]
+    """Description, then condition, unit, constraints, read-only and deprecation in one line."""
+    facts = [parameter.stated("condition", "unit", "constraints", "read_only")]
     if parameter.deprecated:
         facts.append(f"Deprecated: {parameter.deprecated}")
     lines = comment_lines(parameter.description)

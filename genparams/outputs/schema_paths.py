@@ -18,11 +18,17 @@ ENTRY_KEY_PATTERN = f"^{ENTRY_KEY_TEXT.pattern}$"  # the key of a mapped entry, 
 def descendants(group: Group) -> Iterator[tuple[tuple[str, ...], Group | Parameter]]:
     """Every parameter and group below ``group``, with its path relative to ``group``.
 
-    Below a mapped group, ``*`` holds the place of an entry's key.
+    Below a mapped group, ``*`` holds the place of an entry's key. The entries of a
+    per-item parameter are the parameter itself.
     """
     for parameter in group.parameters:
         yield (parameter.path[-1],), parameter
     for child in group.groups:
+        if child.per_item:
+            if not child.in_place:
+                yield (child.path[-1],), child  # the map of its entries
+            yield child.parameters[0].path[len(group.path) :], child.parameters[0]
+            continue
         if child.in_place:  # its entries sit right here, by key
             entry: tuple[str, ...] = (ENTRY_KEY,)
             yield entry, child
@@ -45,15 +51,29 @@ def open_descendants(group: Group) -> Iterator[tuple[tuple[str, ...], OpenNamesp
 def dotted_pattern(path: tuple[str, ...], beside: Collection[str] = ()) -> str:
     """A regex for the dotted key of ``path``, with any entry key where ``*`` stands.
 
-    ``beside``: the fixed names of the namespace where a leading ``*`` (in-place
+    ``beside``: the fixed names of the namespace where the first ``*`` (in-place
     entries) stands; no entry key may be one of them, so no key matches both.
     """
     token = ENTRY_KEY_PATTERN[1:-1]
     parts = [token if p == ENTRY_KEY else re.escape(p) for p in path]
-    if beside and path[:1] == (ENTRY_KEY,):
+    if beside and ENTRY_KEY in path:
         names = "|".join(re.escape(name) for name in sorted(beside))
-        parts[0] = f"(?!(?:{names})(?:\\.|$)){token}"
+        first = path.index(ENTRY_KEY)
+        parts[first] = f"(?!(?:{names})(?:\\.|$)){token}"
     return "^" + "\\.".join(parts) + "$"
+
+
+def names_beside_entries(group: Group, path: tuple[str, ...]) -> set[str]:
+    """The fixed names of the namespace where the first ``*`` of ``path`` stands (relative to
+    ``group``): in-place entries sit beside them. Empty when that namespace is a map."""
+    at = path.index(ENTRY_KEY)
+    namespace = group
+    for name in path[:at]:
+        found = next((g for g in namespace.groups if not g.in_place and g.path[-1] == name), None)
+        if found is None or found.mapped_over:
+            return set()
+        namespace = found
+    return fixed_names(namespace)
 
 
 def fixed_names(group: Group) -> set[str]:

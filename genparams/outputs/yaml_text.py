@@ -97,7 +97,9 @@ def value_text(value: Any, param_type: ParamType) -> str:
 
     A byte_array is written as a list of integers: ROS's params-file parser has
     no byte type, and the runtime accepts integers 0..255 for a byte_array.
+    A value of type ``any`` is spelled as its own type.
     """
+    param_type = param_type.of_value(value)
     if not param_type.is_array:
         return scalar_text(value, param_type.name)
     kind = param_type.scalar_kind

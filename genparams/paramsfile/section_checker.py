@@ -41,6 +41,7 @@ class SectionChecker:
         )
         self.params: dict[str, CompiledParam] = dict(self.compiled.parameters)
         self.old_names: dict[str, ParamEntry] = {}  # old name -> the entry that used it
+        self.conditions: dict[str, Any] = {}  # start values that conditions (when) read
 
     def offline(self, param: CompiledParam) -> CompiledParam:
         """The checks that can run here: a custom validator whose module is missing is skipped."""
@@ -68,6 +69,7 @@ class SectionChecker:
         ``nodes`` pairs each node ("" when unnamed) with its sections in rcl's order.
         """
         self.params.update(expand(self.compiled, self.key_lists(applied)))
+        self.conditions = self.start_values(applied)
         for section in applied:
             for entry in section.entries:
                 self.entry(entry)
@@ -124,6 +126,12 @@ class SectionChecker:
                     f"warning: deprecated: {self.deprecated[entry.name]}",
                 )
             )
+        if param.spec.optional and entry.value is None:
+            return  # "not set" (ROS reads [] so): the node leaves an optional parameter unset
+        if not param.spec.declared_with(self.conditions):
+            message = f"warning: {param.spec.condition_text}: the node ignores this value"
+            self.warnings.append(SchemaProblem(entry.key_location, entry.name, message))
+            return
         try:
             value = param.type.from_ros(entry.value)
         except ValueTypeError as exc:
@@ -204,7 +212,10 @@ class SectionChecker:
             for entry in section.entries
         }
         where = sections[-1].params_location if sections else Location(self.file, 1, 1)
+        conditions = self.start_values(sections)
         for name, param in self.params.items():
+            if not param.spec.declared_with(conditions):
+                continue  # left out by its condition: nothing to give
             # An adopted parameter may get its value from the code that declares it first.
             if param.spec.required and not param.spec.adopt and name not in given:
                 for_node = f" for {node}" if node else ""
@@ -218,15 +229,39 @@ class SectionChecker:
                     )
                 )
 
+    def start_values(self, sections: Sequence[Section]) -> dict[str, Any]:
+        """The fixed parameters' values a node would start with: defaults, then the valid
+        values of ``sections``."""
+        values: dict[str, Any] = {}
+        for name, param in self.compiled.parameters.items():
+            if not (param.spec.required or param.spec.optional):
+                values[name] = param.type.coerce_default(param.spec.default)
+        for section in sections:
+            for entry in section.entries:
+                name = self.compiled.aliases.get(entry.name, entry.name)
+                given = self.compiled.parameters.get(name)
+                if given is None:
+                    continue
+                try:
+                    value = given.type.from_ros(entry.value)
+                except ValueTypeError:
+                    continue
+                if given.check(value) is None:
+                    values[name] = value
+        return values
+
     def rules(self, node: str, sections: list[Section]) -> None:
         """Rules over the values the node would start with: its defaults, then this file."""
         if not self.compiled.rules:
             return
+        conditions = self.start_values(sections)
         values: dict[str, Any] = {}
         unusable: set[str] = set()  # given with a wrong value, already reported
         entries: dict[str, ParamEntry] = {}
         for name, param in self.compiled.parameters.items():
-            if not param.spec.required:
+            if param.spec.optional:
+                values[name] = None  # not set: rules reading it are not checked
+            elif not param.spec.required:
                 values[name] = param.type.coerce_default(param.spec.default)
         for section in sections:
             for entry in section.entries:
@@ -245,6 +280,9 @@ class SectionChecker:
                     unusable.discard(name)
                 else:
                     unusable.add(name)
+        for name, param in self.compiled.parameters.items():
+            if not param.spec.declared_with(conditions):
+                values[name] = None  # left out by its condition: rules reading it hold
         for rule in self.compiled.rules:
             if any(n not in values or n in unusable for n in rule.parameters):
                 continue  # a required parameter missing, or a bad value: already reported

@@ -10,6 +10,7 @@ from genparams.runtime.errors import (
 from genparams.runtime.params import Params
 from genparams.runtime.spec import ParamSpec, RuleSpec, SchemaSpec
 from genparams.runtime.tree import Group, GroupMap
+from genparams.runtime.types import RosValue
 
 # What a generated module may rely on: the names below and the fields of the specs.
 # Raise it on any change a module generated before could not run with; every
@@ -28,6 +29,7 @@ __all__ = [
     "Params",
     "RemoteParameterError",
     "RemoteSetError",
+    "RosValue",
     "RuleSpec",
     "SchemaSpec",
 ]

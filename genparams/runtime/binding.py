@@ -34,7 +34,7 @@ from genparams.runtime.rewrites import add_rewrite, typed_empty_arrays
 from genparams.runtime.rule_check import broken_rules
 from genparams.runtime.spec import CompiledParam, compile_schema
 from genparams.runtime.tree import build_tree, copy_node, field_names, get_path, replace_values
-from genparams.runtime.values import same_value
+from genparams.runtime.values import same_typed_value, same_value
 
 P = TypeVar("P", bound=Params)
 
@@ -117,7 +117,8 @@ class Binding(Generic[P]):
             [(ros_parameter(p, n, by_full_name[n]), descriptor_for(p, n)) for n, p in owned.items()]
             + aliases.declarations(owned, by_full_name),
         )
-        report_overrides(notices, parameters, reader.given, reader.renamed, full)
+        given = [name for name in reader.given if name in parameters]  # conditions that hold
+        report_overrides(notices, parameters, given, reader.renamed, full)
 
         binding: Binding[P] = cls(node, prefix, owned)
         binding.sets = sets
@@ -179,7 +180,9 @@ class Binding(Generic[P]):
         for param, value in updates.items():
             path = param.attribute_path
             old = get_path(before, path)
-            if old != value and not same_value(old, value):
+            if (old != value and not same_value(old, value)) or (
+                param.type.is_dynamic and not same_typed_value(old, value)
+            ):
                 paths[path] = value
                 if subscribed:
                     changed.append(Change(param.name, old, value))

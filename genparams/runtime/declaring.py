@@ -25,7 +25,7 @@ def descriptor_for(param: CompiledParam, full_name: str) -> ParameterDescriptor:
         description=param.descriptor_description,
         additional_constraints=param.constraints_text,
         read_only=param.spec.read_only,
-        dynamic_typing=False,
+        dynamic_typing=param.type.is_dynamic,
     )
     ros_range = param.descriptor_range
     if ros_range is not None:
@@ -49,8 +49,16 @@ def descriptor_for(param: CompiledParam, full_name: str) -> ParameterDescriptor:
 
 
 def ros_parameter(param: CompiledParam, full_name: str, value: Any) -> Parameter:
-    """A typed-view value as an rclpy Parameter of the declared type (never inferred)."""
-    return Parameter(full_name, Parameter.Type(param.type.ros_type), param.type.to_ros(value))
+    """A typed-view value as an rclpy Parameter of the declared type (never inferred),
+    or, for a parameter of type ``any``, of the value's own type.
+
+    None, an optional parameter not set, is NOT_SET: rclpy stores it so under a
+    statically typed descriptor, as ``declare_parameter(name, Parameter.Type.X)`` does.
+    """
+    if value is None:
+        return Parameter(full_name, Parameter.Type.NOT_SET)
+    kind = param.type.of_value(value)
+    return Parameter(full_name, Parameter.Type(kind.ros_type), kind.to_ros(value))
 
 
 Declaration = tuple[Parameter, ParameterDescriptor]

@@ -69,6 +69,12 @@ def expand(
     return entries
 
 
+def _controlling(compiled: CompiledSchema) -> dict[str, CompiledParam]:
+    """The parameters that conditions (``when``) read."""
+    names = {name for param in compiled.parameters.values() for name, _ in param.spec.when}
+    return {name: compiled.parameters[name] for name in names}
+
+
 def flatten(values: Mapping[str, Any], prefix: str = "") -> dict[str, Any]:
     """Dotted names -> values from nested and dotted keys (no parameter value is a mapping)."""
     out: dict[str, Any] = {}
@@ -92,11 +98,21 @@ def resolve_all(
 
     Key parameters are fixed, so their values are known before the entries
     they key are expanded. ``read`` gives the ROS-form values given for names.
+    A parameter with a condition (``when``) whose condition does not hold is
+    left out of the parameters, and its value is None.
     """
     parameters = dict(compiled.parameters)
+    given = read(parameters)
+    conditional = [name for name, param in parameters.items() if param.spec.when]
+    if conditional:
+        controlling, _ = resolve_values(compiled, given, parameters=_controlling(compiled))
+        for name in conditional:
+            if not parameters[name].spec.declared_with(controlling):
+                del parameters[name]
     values, problems = resolve_values(
-        compiled, read(parameters), full_name, source, lenient=lenient
+        compiled, given, full_name, source, parameters=parameters, lenient=lenient
     )
+    values.update((name, None) for name in conditional if name not in parameters)
     if compiled.templates:
         entries = expand(compiled, values)
         entry_values, entry_problems = resolve_values(

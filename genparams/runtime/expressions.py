@@ -97,7 +97,8 @@ class _Compiler:
         self.spellings = {
             ".".join(attribute_parts(ros_name)): ros_name for ros_name in parameter_types
         }
-        self.kinds = {name: KIND_OF_TYPE[t] for name, t in parameter_types.items()}
+        # A parameter of type ``any`` has no fixed kind: found, but refused where read.
+        self.kinds = {name: KIND_OF_TYPE.get(t, "") for name, t in parameter_types.items()}
         self.used: dict[str, None] = {}  # ordered set
         self.handlers: dict[type[ast.expr], Callable[[Any], tuple[str, Evaluator]]] = {
             ast.Constant: self.constant,
@@ -165,6 +166,10 @@ class _Compiler:
             error = self.error(node, self.unknown(spelling))
             error.unknown_name = spelling
             raise error
+        if not self.kinds[ros_name]:
+            raise self.error(
+                node, f"{spelling!r} is of type any: its type is not fixed, so no rule can read it"
+            )
         self.used[ros_name] = None
         return self.kinds[ros_name], lambda values: values[ros_name]
 

@@ -178,7 +178,8 @@ class MappedEntries:
             if values[param.name] != value:
                 changed.append(Change(param.name, values[param.name], value))
                 values[param.name] = value
-        fixed = {name: values[name] for name in self.compiled.parameters}
+        # A parameter left out by its condition (``when``) is None.
+        fixed = {name: values.get(name) for name in self.compiled.parameters}
         entries = expand(self.compiled, fixed, self.entries)
         added = {n: p for n, p in entries.items() if n not in self.entries}
         removed = [n for n in self.entries if n not in entries]

@@ -74,7 +74,13 @@ class Params(Group):
             lenient=True,
         )
         unknown = sorted(set(given) - set(parameters))
-        problems.extend(f"{name}: no such parameter" for name in unknown)
+        every = compiled.parameters
+        problems.extend(
+            f"{name}: {every[name].spec.condition_text}"
+            if name in every
+            else f"{name}: no such parameter"
+            for name in unknown
+        )
         if problems:
             raise ParameterDeclarationError(
                 cls._SPEC.name, f"{cls.__name__}.defaults()", problems, doing="build"

@@ -28,13 +28,16 @@ def frozen(value: Any) -> Any:
 def param_from_json(described: Mapping[str, Any], name: str) -> ParamSpec:
     """One described parameter (``describe_parameter``) as its spec, under ``name``."""
     kind = TYPES[described["type"]]
-    default = None if described["required"] else kind.coerce_default(described["default"])
+    optional = described.get("optional", False)
+    no_default = described["required"] or optional
+    default = None if no_default else kind.coerce_default(described["default"])
     span = described.get("range")
     return ParamSpec(
         name=name,
         type=described["type"],
         default=default,
         required=described["required"],
+        optional=optional,
         read_only=described["read_only"],
         range=None if span is None else (span["min"], span["max"], span["step"]),
         choices=None if described["choices"] is None else frozen(described["choices"]),

@@ -12,13 +12,15 @@ from __future__ import annotations
 from collections.abc import Callable, Generator, Mapping
 from typing import TYPE_CHECKING, Any, Generic, TypeVar, cast
 
+from rcl_interfaces.msg import ParameterType
 from rclpy.node import Node
-from rclpy.parameter import Parameter, parameter_value_to_python
+from rclpy.parameter import parameter_value_to_python
 from rclpy.parameter_client import AsyncParameterClient
 from rclpy.task import Future
 
 from genparams.runtime.binding import check_prefix
 from genparams.runtime.changes import Changes
+from genparams.runtime.declaring import ros_parameter
 from genparams.runtime.entries import expand, instantiate, template_keys
 from genparams.runtime.errors import RemoteParameterError, RemoteSetError
 from genparams.runtime.naming import is_entry_key, join_prefix, strip_prefix
@@ -33,6 +35,7 @@ if TYPE_CHECKING:
     from genparams.runtime.remote_watch import RemoteWatch
 
 P = TypeVar("P", bound=Params)
+_NOT_SET = ParameterType.PARAMETER_NOT_SET
 T = TypeVar("T")
 
 
@@ -87,19 +90,26 @@ class RemoteParams(Generic[P]):
 
     def get(self) -> TypedFuture[P]:
         """Every parameter of the schema as a frozen snapshot: the fixed ones in one request,
-        then (for mapped groups) the entries their key lists name, in a second."""
+        then (for mapped groups) the entries their key lists name and the parameters whose
+        condition (``when``) holds, in a second."""
         result: TypedFuture[P] = TypedFuture()
+        parameters = self.compiled.parameters
+        conditional = {n: p for n, p in parameters.items() if p.spec.when}
+        fixed = {n: p for n, p in parameters.items() if n not in conditional}
 
         def fixed_read(values: dict[str, Any]) -> None:
-            entries = expand(self.compiled, values) if self.compiled.templates else {}
-            if not entries:
+            more = {n: p for n, p in conditional.items() if p.spec.declared_with(values)}
+            values.update((n, None) for n in conditional if n not in more)
+            if self.compiled.templates:
+                more.update(expand(self.compiled, values))
+            if not more:
                 result.set_result(self.snapshot(values))
                 return
             self.read(
-                entries, lambda more: result.set_result(self.snapshot({**values, **more})), result
+                more, lambda extra: result.set_result(self.snapshot({**values, **extra})), result
             )
 
-        self.read(self.compiled.parameters, fixed_read, result)
+        self.read(fixed, fixed_read, result)
         return result
 
     def read(
@@ -116,21 +126,44 @@ class RemoteParams(Generic[P]):
             try:
                 messages = response_future.result().values
                 if len(messages) != len(names):
-                    # The service answers nothing at all when one name is not declared.
-                    self.client.list_parameters([], 0, report_missing)
+                    # The service answers nothing at all when one name is not declared, or
+                    # not set (an optional parameter): the types tell which.
+                    if any(param.spec.optional for param in parameters.values()):
+                        self.client.get_parameter_types(full_names, typed)
+                    else:
+                        self.client.list_parameters([], 0, report_missing)
                     return
                 values: dict[str, Any] = {}
                 problems: list[str] = []
                 for name, full, message in zip(names, full_names, messages, strict=True):
                     try:
                         python = parameter_value_to_python(message)
-                        values[name] = parameters[name].type.from_ros(python)
+                        values[name] = parameters[name].from_ros(python)
                     except ValueTypeError as exc:
                         problems.append(f"{full}: {exc}")
                 if problems:
                     raise self.not_following(problems)
                 then(values)
             except Exception as exc:  # handed to whoever waits on the future
+                result.set_exception(exc)
+
+        def typed(response_future: Future) -> None:
+            try:
+                types = response_future.result().types
+                if len(types) != len(names):
+                    self.client.list_parameters([], 0, report_missing)
+                    return
+                unset = [n for n, t in zip(names, types, strict=True) if t == _NOT_SET]
+                refused = [self.full_name(n) for n in unset if not parameters[n].spec.optional]
+                if refused:
+                    raise self.not_following([f"{full}: not set" for full in refused])
+                rest = {n: p for n, p in parameters.items() if n not in unset}
+                nones = dict.fromkeys(unset)
+                if rest:
+                    self.read(rest, lambda values: then({**nones, **values}), result)
+                else:
+                    then(nones)
+            except Exception as exc:
                 result.set_exception(exc)
 
         def report_missing(response_future: Future) -> None:
@@ -180,15 +213,10 @@ class RemoteParams(Generic[P]):
         if reasons:
             result.set_exception(RemoteSetError("; ".join(reasons), sent=False))
             return result
-        parameters = []
-        for param, value in typed.values():
-            parameters.append(
-                Parameter(
-                    self.full_name(param.name),
-                    Parameter.Type(param.type.ros_type),
-                    param.type.to_ros(value),
-                )
-            )
+        parameters = [
+            ros_parameter(param, self.full_name(param.name), value)
+            for param, value in typed.values()
+        ]
 
         def answered(response_future: Future) -> None:
             try:

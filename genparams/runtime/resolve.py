@@ -22,6 +22,8 @@ def resolve_values(
     Cross-parameter rules are checked on the result, so a set of overrides that
     breaks one is reported with the other problems.
 
+    An optional parameter given no value (or None, NOT_SET in ROS) is None.
+
     ``given`` maps relative names to values in ROS form (as rclpy holds them);
     they are typed as strictly as ROS types them (``lenient``: as schema defaults
     are, a double may be an int). ``parameters`` defaults to
@@ -33,7 +35,7 @@ def resolve_values(
         parameters = compiled.parameters
     for name, param in parameters.items():
         shown = full_name(name)
-        if name in given:
+        if name in given and not (param.spec.optional and given[name] is None):
             try:
                 raw = given[name]
                 value = param.type.coerce_default(raw) if lenient else param.type.from_ros(raw)
@@ -46,6 +48,9 @@ def resolve_values(
                 f"{shown}: required parameter is not set "
                 f"(pass -p {shown}:=<{param.type.name}> or set it in a params file)"
             )
+            continue
+        elif param.spec.optional:  # not set: no value to check
+            values[name] = None
             continue
         else:
             value, origin = param.type.coerce_default(param.spec.default), "default"

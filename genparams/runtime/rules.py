@@ -36,6 +36,8 @@ class CompiledRule:
         return None if failure is None else f"rule {self.name!r} broken: {failure}"
 
     def failure(self, values: Values, shown: Callable[[str], str] = str) -> str | None:
+        if any(values[n] is None for n in self.parameters):
+            return None  # it reads an optional parameter that is not set: nothing to check yet
         involved = ", ".join(f"{shown(n)}={values[n]!r}" for n in self.parameters)
         try:
             holds = self.expression.evaluate(values)

@@ -69,6 +69,10 @@ def describe_parameter(param: CompiledParam, name: str) -> dict[str, Any]:
         described["range"] = {"min": low, "max": high, "step": step[0] if step else 0}
     if ros_range is not None:
         described["ros_range"] = True
+    if spec.optional:  # only when true: messages of other schemas stay as they were
+        described["optional"] = True
+    if spec.when:
+        described["when"] = {name: json_value(values) for name, values in spec.when}
     return described
 
 
@@ -80,11 +84,13 @@ def describe_class(compiled: CompiledSchema, prefix: str) -> dict[str, Any]:
 
     maps = []
     for path, key_name in compiled.maps.items():
-        head = f"{path}.{ENTRY_KEY}."
+        # An entry's field names, relative to the entry: "" when the entry is one parameter
+        # named by its item (a per-item parameter).
+        entry = join_prefix(path, ENTRY_KEY)
         fields = [
-            describe_parameter(param, name[len(head) :])
+            describe_parameter(param, name[len(entry) + 1 :])
             for name, param in compiled.templates.items()
-            if name.startswith(head)
+            if name == entry or name.startswith(f"{entry}.")
         ]
         maps.append({"path": full(path), "for_each": full(key_name), "fields": fields})
     body: dict[str, Any] = {

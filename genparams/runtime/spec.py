@@ -42,6 +42,32 @@ class ParamSpec:
     aliases: tuple[str, ...] = ()  # old dotted names, relative to the prefix
     configure_only: bool = False  # lifecycle nodes: set only while unconfigured or inactive
     adopt: bool = False  # declared first by other code of the node: taken over, not refused
+    # Declared by type only (rclpy: declare_parameter(name, Parameter.Type.X)): the value is
+    # None, NOT_SET on the node, until an override or a set gives it one.
+    optional: bool = False
+    # Declared only when each named parameter holds one of its values at declaration:
+    # (("mode", ("advanced",)),). Decided once, as hand-written nodes decide at startup.
+    when: tuple[tuple[str, tuple[Any, ...]], ...] = ()
+
+    def declared_with(self, values: Mapping[str, Any]) -> bool:
+        """Whether the condition (``when``) holds for ``values``, by relative name."""
+        return all(values.get(name) in allowed for name, allowed in self.when)
+
+    @property
+    def condition_text(self) -> str:
+        """``when`` in words: "declared only when mode is 'advanced'"."""
+        parts = [
+            f"{name} is {' or '.join(_value_words(value) for value in allowed)}"
+            for name, allowed in self.when
+        ]
+        return "declared only when " + " and ".join(parts) if parts else ""
+
+
+def _value_words(value: Any) -> str:
+    """A condition's value as a params file spells it: true, 2.5, 'advanced'."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    return repr(value)
 
 
 @dataclass(frozen=True)
@@ -108,6 +134,12 @@ class CompiledParam:
     @property
     def name(self) -> str:
         return self.spec.name
+
+    def from_ros(self, value: Any) -> Any:
+        """A ROS value in typed-view form; None (NOT_SET) stays None for an optional parameter."""
+        if value is None and self.spec.optional:
+            return None
+        return self.type.from_ros(value)
 
     def check(self, value: Any) -> str | None:
         """The first rule ``value`` breaks, as a reason, or None."""

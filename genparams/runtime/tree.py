@@ -72,6 +72,8 @@ G = TypeVar("G", bound=Group)
 class GroupMap(Mapping[str, G]):
     """The entries of a mapped group (``for_each``), by key: a read-only value like a group.
 
+    The entries of a per-item parameter (a leaf with ``for_each``) are its values.
+
     Keys live in a mapping, not in attributes, so no key can hide a field or
     a method, and keys need not be Python identifiers.
     """
@@ -174,7 +176,10 @@ def build_tree(
 
     def entries(template: str, level: Mapping[str, Any]) -> GroupMap[Any]:
         entry = f"{template}.{ENTRY_KEY}" if template else ENTRY_KEY
-        return GroupMap({k: make(groups[entry], entry, v) for k, v in level.items()})
+        cls = groups.get(entry)
+        if cls is None:  # one parameter per item: the entries are the values
+            return GroupMap(level)
+        return GroupMap({k: make(cls, entry, v) for k, v in level.items()})
 
     def make(cls: type[Group], template: str, level: dict[str, Any]) -> Group:
         for name in children.get(template, ()):
@@ -300,16 +305,21 @@ def to_dict(node: Group, *, top_level: bool = True) -> dict[str, Any]:
     for attr in field_names(type(node)):
         value = getattr(node, attr)
         if attr == MAP_SLOT:  # in-place entries sit beside the fields, by key
-            out.update((k, to_dict(entry, top_level=False)) for k, entry in value.items())
+            out.update((k, _entry_dict(entry)) for k, entry in value.items())
             continue
         key = ros_keys.get(attr) or _ros_key_guess(attr, top_level=top_level)
         if isinstance(value, GroupMap):
-            out[key] = {k: to_dict(entry, top_level=False) for k, entry in value.items()}
+            out[key] = {k: _entry_dict(entry) for k, entry in value.items()}
         elif isinstance(value, Group):
             out[key] = to_dict(value, top_level=False)
         else:
             out[key] = value
     return out
+
+
+def _entry_dict(entry: Any) -> Any:
+    """An entry of a mapped group as a dict; a per-item parameter's entry is its value."""
+    return to_dict(entry, top_level=False) if isinstance(entry, Group) else entry
 
 
 def _ros_key_guess(attr: str, *, top_level: bool) -> str:

@@ -1,15 +1,31 @@
-"""The table of the nine ROS 2 parameter types: one row per type.
+"""The table of the nine ROS 2 parameter types, and ``any``: one row per type.
 
 Everything that depends on a parameter's type (the Python annotation of the
 typed view, the ROS ``ParameterType`` number, how a schema default or a ROS
 value is checked and converted) is read from this table. The module is pure
 Python so both the code generator and the runtime can use it.
+
+``any`` is a dynamically typed parameter (``dynamic_typing`` in its descriptor):
+each value carries its own type, one of the nine, which a set may change.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, ClassVar, TypeAlias
+
+RosValue: TypeAlias = (
+    bool
+    | int
+    | float
+    | str
+    | bytes
+    | tuple[bool, ...]
+    | tuple[int, ...]
+    | tuple[float, ...]
+    | tuple[str, ...]
+)
+"""The typed-view value of a parameter of type ``any``: any of the nine types' values."""
 
 INT64_MIN = -(2**63)
 INT64_MAX = 2**63 - 1
@@ -27,10 +43,15 @@ class ParamType:
     annotation: str  # Python type of the typed view
     element: str | None  # element kind for arrays: bool | int | double | string | byte
     json_type: str  # JSON Schema type of a value
+    is_dynamic: ClassVar[bool] = False  # ``any``: the type is the value's own (dynamic_typing)
 
     @property
     def is_array(self) -> bool:
         return self.element is not None
+
+    def of_value(self, value: Any) -> ParamType:
+        """The type a typed-view value has under this parameter type: its own for ``any``."""
+        return self
 
     @property
     def scalar_kind(self) -> str:
@@ -167,6 +188,52 @@ def _convert_bytes(value: Any) -> bytes:
 
 _SCALAR_NAMES = {"bool": "bool", "int": "integer", "double": "double", "string": "string"}
 
+
+class DynamicType(ParamType):
+    """``any``: a value of any of the nine types, typed by what it is (as rclpy infers
+    ``Parameter.Type.from_parameter_value``). A list takes the type of its items, which
+    must share one; a list of ints and doubles is a double_array in a schema default.
+    An empty list is a byte_array, as rclpy infers it; a schema default cannot be one."""
+
+    is_dynamic: ClassVar[bool] = True
+
+    def of_value(self, value: Any) -> ParamType:
+        return TYPES[_kind_of(value)]
+
+    def coerce_default(self, value: Any) -> Any:
+        return TYPES[_kind_of(value, lenient_double=True)].coerce_default(value)
+
+    def from_ros(self, value: Any) -> Any:
+        return TYPES[_kind_of(value)].from_ros(value)
+
+    def to_ros(self, value: Any) -> Any:
+        return TYPES[_kind_of(value)].to_ros(value)
+
+
+_SCALAR_KINDS = {bool: "bool", int: "int", float: "double", str: "string"}
+
+
+def _kind_of(value: Any, lenient_double: bool = False) -> str:
+    """The type name of a value of ``any``, or ValueTypeError."""
+    kind = _SCALAR_KINDS.get(type(value))
+    if kind is not None:
+        return kind
+    if isinstance(value, (bytes, bytearray)):
+        return "byte_array"
+    if isinstance(value, (list, tuple)) or type(value).__name__ == "array":
+        if not value and lenient_double:  # a schema default
+            raise ValueTypeError("an empty list has no type: give an item, or a typed parameter")
+        if all(isinstance(item, bytes) and len(item) == 1 for item in value):
+            return "byte_array"  # rclpy's form of a byte array
+        kinds = {_SCALAR_KINDS.get(type(item)) for item in value}
+        if lenient_double and kinds == {"int", "double"}:
+            kinds = {"double"}
+        if len(kinds) == 1 and None not in kinds:
+            return f"{kinds.pop()}_array"
+        raise ValueTypeError(f"the items of a list must share one type, got {_describe(value)}")
+    raise ValueTypeError(f"expected a value of a ROS parameter type, got {_describe(value)}")
+
+
 TYPES: dict[str, ParamType] = {
     t.name: t
     for t in (
@@ -183,7 +250,10 @@ TYPES: dict[str, ParamType] = {
         ParamType(
             "string_array", 9, "PARAMETER_STRING_ARRAY", "tuple[str, ...]", "string", "array"
         ),
+        DynamicType("any", 0, "PARAMETER_NOT_SET", "_RosValue", None, "any"),
     )
 }
 
-TYPES_BY_ROS_TYPE: dict[int, ParamType] = {t.ros_type: t for t in TYPES.values()}
+TYPES_BY_ROS_TYPE: dict[int, ParamType] = {
+    t.ros_type: t for t in TYPES.values() if not t.is_dynamic
+}

@@ -173,7 +173,7 @@ KINDS: dict[str, ValidatorKind] = {
         ValidatorKind("unique", ARRAYS, lambda _a, _t: Unique(), takes_argument=False),
         ValidatorKind("length", SIZED, _length),
         ValidatorKind("pattern", frozenset({"string", "string_array"}), _pattern),
-        ValidatorKind("custom", ALL_TYPES, _custom),
+        ValidatorKind("custom", ALL_TYPES | {"any"}, _custom),
     )
 }
 

@@ -20,3 +20,11 @@ def same_value(a: Any, b: Any) -> bool:
     if type(a) is tuple and type(b) is tuple and len(a) == len(b):
         return all(same_value(x, y) for x, y in zip(a, b, strict=True))
     return False
+
+
+def same_typed_value(a: Any, b: Any) -> bool:
+    """``same_value`` of two values of the same type: for a parameter of type ``any``,
+    1 and 1.0 (an int then a double), or (1,) and (1.0,), are a change."""
+    if type(a) is not type(b) or not same_value(a, b):
+        return False
+    return type(a) is not tuple or not a or type(a[0]) is type(b[0])

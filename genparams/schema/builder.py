@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Collection, Iterable, Iterator
+from dataclasses import replace
 from typing import Any
 
 from genparams.runtime import naming
@@ -18,7 +19,7 @@ from genparams.schema.errors import SchemaError, SchemaProblem
 from genparams.schema.leaf_checks import LeafChecks
 from genparams.schema.loader import LoadedDocument, Path, dotted
 from genparams.schema.model import Group, OpenNamespace, Parameter, Schema, with_entry_keys
-from genparams.schema.references import check_aliases, check_maps
+from genparams.schema.references import check_aliases, check_conditions, check_maps
 from genparams.schema.rule_builder import build_rules
 
 FOR_EACH = "for_each"
@@ -61,6 +62,7 @@ class _ModelBuilder:
         self.leaf_paths: dict[str, Path] = {}  # parameter ROS name -> its document path
         self.mapped: list[tuple[Group, Path]] = []
         self.aliases: list[tuple[str, Path, Parameter]] = []  # (alias, where, its parameter)
+        self.conditional: list[tuple[Parameter, Path]] = []  # parameters with when:
         self.unbuilt: list[tuple[str, ...]] = []  # paths of names left out for known problems
         self.leaf_checks = LeafChecks(self.problem)
 
@@ -76,6 +78,7 @@ class _ModelBuilder:
         root = self.group(data["parameters"], ("parameters",), (), "", class_name)
         check_maps(root, self.mapped, self.leaf_paths, self.problem, self.is_unbuilt)
         check_aliases(root, self.aliases, self.problem)
+        check_conditions(root, self.conditional, self.problem, self.is_unbuilt)
         rules, rule_problems = build_rules(self.document, root.walk_parameters(), self.is_unbuilt)
         self.problems.extend(rule_problems)
         root = with_entry_keys(root)
@@ -138,6 +141,8 @@ class _ModelBuilder:
                         location=self.document.key_location(key_path),
                     )
                 )
+            elif isinstance(value, dict) and "type" in value and FOR_EACH in value:
+                groups.append(self.per_item(value, key_path, child_path, child_attribute))
             elif isinstance(value, dict) and "type" in value:
                 parameters.append(self.parameter(value, key_path, child_path, child_attribute))
             elif isinstance(value, dict):
@@ -161,8 +166,35 @@ class _ModelBuilder:
             self.mapped.append((group, doc_path))
         return group
 
+    def per_item(
+        self,
+        leaf: dict[str, Any],
+        doc_path: Path,
+        path: tuple[str, ...],
+        attribute: str,
+        *,
+        in_place: bool = False,
+    ) -> Group:
+        """A leaf with ``for_each``: one parameter per item, named by the item itself."""
+        item = self.parameter(leaf, doc_path, (*path, naming.ENTRY_KEY), naming.ENTRY_KEY)
+        item = replace(item, per_item_of=leaf[FOR_EACH])
+        group = Group(
+            ros_name=".".join(path),
+            path=path,
+            attribute=attribute,
+            class_name="",
+            parameters=(item,),
+            groups=(),
+            mapped_over=leaf[FOR_EACH],
+            in_place=in_place,
+            per_item=True,
+        )
+        self.mapped.append((group, doc_path))
+        return group
+
     def entries_in_place(self, value: Any, key_path: Path, path: tuple[str, ...]) -> Group | None:
-        """A ``"*"`` key: a mapped group whose entries sit in this namespace, by key."""
+        """A ``"*"`` key: a mapped group whose entries sit in this namespace, by key, or,
+        with ``type:``, one parameter per item, each named by its item."""
         if not (isinstance(value, dict) and FOR_EACH in value):
             self.problem(
                 key_path,
@@ -171,9 +203,11 @@ class _ModelBuilder:
                 at_key=True,
             )
             return None
-        if self.skipped(key_path, whole_tree=False):
+        if self.skipped(key_path, whole_tree="type" in value):
             self.unbuilt.append((*path, naming.ENTRY_KEY))
             return None
+        if "type" in value:
+            return self.per_item(value, key_path, path, "", in_place=True)
         words = "".join(naming.pascal_case(p) for p in path if p != naming.ENTRY_KEY)
         depth = path.count(naming.ENTRY_KEY) + 1  # "Entry" once per map level
         entry_class = self.unique_class_name(f"{words}{'Entry' * depth}Group")
@@ -242,10 +276,19 @@ class _ModelBuilder:
         self, leaf: dict[str, Any], doc_path: Path, path: tuple[str, ...], attribute: str
     ) -> Parameter:
         param_type = TYPES[leaf["type"]]
-        required = "default" not in leaf
+        optional = leaf.get("optional", False)
+        required = "default" not in leaf and not optional
         default = None
-        default_ok = not required
-        if not required:
+        default_ok = "default" in leaf
+        if optional and "default" in leaf:
+            self.problem(
+                (*doc_path, "optional"),
+                "an optional parameter has no default (it is not set until an override or a "
+                "set gives it a value): remove default, or optional",
+                at_key=True,
+            )
+            default_ok = False
+        elif default_ok:
             try:
                 default = param_type.coerce_default(leaf["default"])
             except ValueTypeError as exc:
@@ -275,6 +318,11 @@ class _ModelBuilder:
             location=self.document.key_location(doc_path),
             configure_only=leaf.get("configure_only", False),
             adopt=leaf.get("adopt", False),
+            optional=optional,
+            when=tuple(
+                (str(name), tuple(value) if isinstance(value, list) else (value,))
+                for name, value in leaf.get("when", {}).items()
+            ),
         )
         # The runtime's own checks, compiled once: they judge the default here, and the
         # model keeps them to word each constraint in every output.
@@ -298,10 +346,30 @@ class _ModelBuilder:
                 "their keys, which other code does not follow",
                 at_key=True,
             )
+        if optional:
+            self.check_optional(parameter, doc_path)
+        if parameter.when:
+            self.conditional.append((parameter, doc_path))
         self.leaf_paths[parameter.ros_name] = doc_path
         for index, alias in enumerate(parameter.aliases):
             self.aliases.append((alias, (*doc_path, "aliases", index), parameter))
         return parameter
+
+    def check_optional(self, parameter: Parameter, doc_path: Path) -> None:
+        """What an optional parameter cannot be combined with."""
+        if naming.ENTRY_KEY in parameter.path:
+            self.problem(
+                (*doc_path, "optional"),
+                "optional is not supported inside a mapped group: give the parameter a default",
+                at_key=True,
+            )
+        if parameter.aliases:
+            self.problem(
+                (*doc_path, "optional"),
+                "an optional parameter cannot have aliases: an old name would need a value "
+                "to mirror",
+                at_key=True,
+            )
 
 
 def _adopts(value: Any) -> bool:

@@ -59,24 +59,51 @@ class Parameter:
     adopt: bool = False  # other code may declare it first; genparams takes it over
     # For a for_each parameter: the mapped groups its items name (their checks join its own).
     keys_entries_of: str = ""
+    optional: bool = False  # declared by type only: no value until an override or a set
+    per_item_of: str = ""  # a per-item parameter (``offsets.*``): the list naming its entries
+    # Declared only when each named parameter holds one of its values: (("mode", ("a",)),)
+    when: tuple[tuple[str, tuple[Any, ...]], ...] = ()
 
     @property
     def annotation(self) -> str:
+        if self.optional or self.when:  # not set, or not declared: None
+            return f"{self.type.annotation} | None"
         return self.type.annotation
+
+    @property
+    def condition_words(self) -> str:
+        """``when`` as a sentence: "Declared only when mode is 'advanced'"; "" without one."""
+        text = self.runtime_spec.condition_text
+        return text[:1].upper() + text[1:]
+
+    @property
+    def default_words(self) -> str:
+        """What the parameter holds when nothing overrides it, in every output's words."""
+        if self.required:
+            return "Required."
+        if self.optional:
+            return "Not set by default."
+        return f"Default: {self.default!r}."
 
     @functools.cached_property
     def docstring(self) -> str:
         """Hover text in IDEs: description, unit, default and constraints."""
-        default = "Required." if self.required else f"Default: {self.default!r}."
+        default = self.default_words
         deprecated = f"Deprecated: {self.deprecated.rstrip('.')}." if self.deprecated else ""
         facts = (
             self.stated("type", "unit"),
             default,
-            self.stated("read_only", "constraints"),
+            self.stated("condition", "read_only", "constraints"),
             deprecated,
             self.stated("old_names"),
         )
-        return f"{self.description or self.ros_name}\n\n" + " ".join(f for f in facts if f)
+        head = self.description or self.ros_name
+        if self.per_item_of:
+            where = self.ros_name.replace(ENTRY_KEY, "<item>")
+            each = f"One parameter per item of {self.per_item_of}: {where}."
+            head = f"{self.description or where}\n\n{each}"
+            return f"{head} " + " ".join(f for f in facts if f)
+        return f"{head}\n\n" + " ".join(f for f in facts if f)
 
     def stated(self, *facts: str) -> str:
         """The named facts in the words every output states them in (docstrings, comments
@@ -90,6 +117,7 @@ class Parameter:
             "type": f"Type: {self.type.name}.",
             "unit": f"Unit: {self.unit}." if self.unit else "",
             "read_only": "Read-only." if self.read_only else "",
+            "condition": f"{self.condition_words}." if self.when else "",
             "constraints": f"Constraints: {self.all_constraints_text}." if self.constraints else "",
             "old_names": f"Old names: {', '.join(self.aliases)}." if self.aliases else "",
         }
@@ -122,6 +150,8 @@ class Parameter:
         options: list[tuple[str, Any]] = []
         if self.required:
             options.append(("required", True))
+        elif self.optional:
+            options.append(("optional", True))
         else:
             options.append(("default", self.default))
         for key, value, empty in (
@@ -136,6 +166,7 @@ class Parameter:
             ("aliases", self.aliases, ()),
             ("configure_only", self.configure_only, False),
             ("adopt", self.adopt, False),
+            ("when", self.when, ()),
         ):
             if value != empty:
                 options.append((key, value))
@@ -185,6 +216,14 @@ class Group:
     mapped_over: str = ""  # ROS name of the string_array parameter whose items key the entries
     open_namespaces: tuple[OpenNamespace, ...] = ()
     in_place: bool = False  # a "*" group: path and ros_name are its parent's
+    # A leaf with for_each: one parameter per item, named by the item (``offsets.<item>``);
+    # its one parameter is the template (``offsets.*``), and it has no class of its own.
+    per_item: bool = False
+
+    @property
+    def entry_annotation(self) -> str:
+        """The type of one entry: the entry class, or the value of a per-item parameter."""
+        return self.parameters[0].annotation if self.per_item else self.class_name
 
     @property
     def entries_group(self) -> Group | None:
@@ -199,10 +238,12 @@ class Group:
     @property
     def annotation(self) -> str:
         """The type of this group as an attribute of its parent."""
-        return f"_Mapping[str, {self.class_name}]" if self.mapped_over else self.class_name
+        return f"_Mapping[str, {self.entry_annotation}]" if self.mapped_over else self.class_name
 
     @property
     def field_docstring(self) -> str:
+        if self.per_item:
+            return self.parameters[0].docstring
         if self.mapped_over:
             return f"Mapped group {self.ros_name}: one entry per item of {self.mapped_over}."
         return f"Namespace {self.ros_name}."
@@ -231,7 +272,8 @@ class Group:
         return ("_map", *names) if self.entries_group is not None else names  # ruff's order
 
     def walk_groups(self) -> Iterator[Group]:
-        """Every group below this one, children before parents (definition order)."""
+        """Every group below this one, children before parents (definition order);
+        per-item parameters (a leaf with for_each) included."""
         for group in self.groups:
             yield from group.walk_groups()
             yield group
@@ -275,7 +317,8 @@ class Schema:
 
     @property
     def nested_groups(self) -> tuple[Group, ...]:
-        return tuple(self.root.walk_groups())
+        """The groups that are classes: per-item parameters have none."""
+        return tuple(g for g in self.root.walk_groups() if not g.per_item)
 
     @property
     def parameters(self) -> tuple[Parameter, ...]:
@@ -293,11 +336,16 @@ class Schema:
     @property
     def maps(self) -> tuple[tuple[str, str], ...]:
         """(mapped group, its for_each parameter), for the runtime."""
-        return tuple((g.ros_name, g.mapped_over) for g in self.nested_groups if g.mapped_over)
+        return tuple((g.ros_name, g.mapped_over) for g in self.root.walk_groups() if g.mapped_over)
 
     @property
     def uses_mapping(self) -> bool:
         return bool(self.maps)
+
+    @property
+    def uses_any(self) -> bool:
+        """Whether a parameter is of type ``any``, annotated with the runtime's RosValue."""
+        return any(p.type.is_dynamic for p in self.parameters)
 
     @property
     def uses_entries_by_key(self) -> bool:

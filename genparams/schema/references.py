@@ -10,6 +10,7 @@ from typing import Protocol
 
 from genparams.runtime import naming
 from genparams.runtime.suggest import did_you_mean
+from genparams.runtime.types import ValueTypeError
 from genparams.schema.loader import Path
 from genparams.schema.model import Group, Parameter
 
@@ -42,7 +43,8 @@ def check_maps(
     ``unbuilt``: whether a name was left out for a problem of its own, already reported.
     """
     fixed = {p.ros_name: p for p in root.walk_parameters() if naming.ENTRY_KEY not in p.path}
-    map_paths = [(group.path, group.ros_name) for group, _ in mapped]
+    # In-place maps are left out: their entries sit beside fixed names, none "inside" them.
+    map_paths = [(group.path, group.ros_name) for group, _ in mapped if not group.in_place]
     for group, doc_path in mapped:
         where = (*doc_path, "for_each")
         target = group.mapped_over
@@ -56,10 +58,58 @@ def check_maps(
                 f"for_each names {target!r}, which is of type {param.type.name}; "
                 "it must name a string_array parameter",
             )
+        elif param.optional or param.when:
+            report(
+                where,
+                f"for_each names {target!r}, an optional or conditional parameter; the "
+                "items that key entries need a value: give it a default, and no when",
+            )
         elif param.default is not None:  # None: required, or a bad default already reported
             reason = naming.entry_key_problem(param.default, group.ros_name)
             if reason is not None:
                 report((*leaf_paths[target], "default"), f"default violates for_each: {reason}")
+
+
+_CONDITION_TYPES = ("bool", "int", "double", "string")
+
+
+def check_conditions(
+    root: Group,
+    conditional: Sequence[tuple[Parameter, Path]],
+    report: Report,
+    unbuilt: Callable[[str], bool] = lambda name: False,
+) -> None:
+    """Each ``when`` names a fixed, unconditional scalar parameter, with values of its type."""
+    fixed = {p.ros_name: p for p in root.walk_parameters() if naming.ENTRY_KEY not in p.path}
+    for param, doc_path in conditional:
+        where = (*doc_path, "when")
+        if naming.ENTRY_KEY in param.path or param.aliases:
+            what = "inside a mapped group" if naming.ENTRY_KEY in param.path else "with aliases"
+            report(where, f"when is not supported {what}", at_key=True)
+        for name, values in param.when:
+            target = fixed.get(name)
+            at = (*where, name)
+            if target is None:
+                if not unbuilt(name):
+                    report(
+                        at,
+                        f"when names {name!r}, which is not a parameter{did_you_mean(name, fixed)}",
+                        at_key=True,
+                    )
+                continue
+            if target.when or target is param or target.type.name not in _CONDITION_TYPES:
+                report(
+                    at,
+                    f"when names {name!r}: it must name a parameter of type bool, int, "
+                    "double or string that has no when itself",
+                    at_key=True,
+                )
+                continue
+            for value in values:
+                try:
+                    target.type.coerce_default(value)
+                except ValueTypeError as exc:
+                    report(at, f"value {value!r} does not match {name!r}: {exc}")
 
 
 def _missing_target(

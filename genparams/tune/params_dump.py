@@ -16,7 +16,10 @@ def owned_names(schema: Mapping[str, Any], values: Mapping[str, Any]) -> set[str
         for group in described["maps"]:
             keys = values.get(group["for_each"]) or []
             for key in keys:
-                names.update(f"{group['path']}.{key}.{f['name']}" for f in group["fields"])
+                names.update(
+                    ".".join(p for p in (group["path"], key, f["name"]) if p)
+                    for f in group["fields"]  # a field named "" is the entry itself (per item)
+                )
     return names
 
 

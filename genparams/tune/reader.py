@@ -13,7 +13,7 @@ import time
 from collections.abc import Sequence
 from typing import Any
 
-from rcl_interfaces.msg import ParameterType
+from rcl_interfaces.msg import ParameterType, ParameterValue
 from rcl_interfaces.srv import DescribeParameters, GetParameters, ListParameters
 from rclpy.client import Client
 from rclpy.node import Node
@@ -106,7 +106,9 @@ def read_all(readers: Sequence[ParameterReader], timeout: float) -> dict[str, li
     ]
     return {
         reader.target: parameters_of(
-            listed, wait_future(got, timeout).values, wait_future(described, timeout).descriptors
+            listed,
+            values_or_unset(reader, listed, wait_future(got, timeout).values, timeout),
+            wait_future(described, timeout).descriptors,
         )
         for reader, listed, got, described in zip(readers, names, getting, describing, strict=True)
     }
@@ -124,8 +126,20 @@ def read_named(
     wanted = [name for name in dict.fromkeys(names) if name in known]
     got = reader.getter.call_async(GetParameters.Request(names=wanted))
     described = reader.describer.call_async(DescribeParameters.Request(names=wanted))
-    values = wait_future(got, timeout).values
+    values = values_or_unset(reader, wanted, wait_future(got, timeout).values, timeout)
     return declared, parameters_of(wanted, values, wait_future(described, timeout).descriptors)
+
+
+def values_or_unset(
+    reader: ParameterReader, names: Sequence[str], values: Sequence[Any], timeout: float
+) -> Sequence[Any]:
+    """``values``, or, when the get service answered nothing because a parameter is
+    declared by type only and not set, each name's value asked alone (unset: NOT_SET)."""
+    if len(values) == len(names):
+        return values
+    alone = [reader.getter.call_async(GetParameters.Request(names=[name])) for name in names]
+    answers = [wait_future(future, timeout).values for future in alone]
+    return [answer[0] if answer else ParameterValue() for answer in answers]
 
 
 def parameters_of(

@@ -1,7 +1,7 @@
 """Every golden module, imported and declared on a real node, reads back its defaults.
 
-A case may hold ``overrides.yaml`` (relative name -> value) for its required
-parameters; those values must read back too.
+A case may hold ``overrides.yaml`` (relative name -> value) for its required and
+optional parameters; those values must read back too (an optional one not given: None).
 """
 
 from __future__ import annotations
@@ -11,10 +11,11 @@ from typing import Any
 
 import pytest
 import yaml
-from rclpy.parameter import Parameter
 
+from genparams.runtime.declaring import ros_parameter
 from genparams.runtime.entries import expand
 from genparams.runtime.spec import compile_schema
+from genparams.runtime.tree import get_path
 from genparams.runtime.types import TYPES
 from tests.golden import runtime_cases
 from tests.readback import mismatches, params_class, read_back
@@ -33,22 +34,25 @@ def test_golden_module_declares_and_reads_back(ros: RosHarness, case: Path) -> N
     cls = params_class(import_file(case / "expected_params.py"))
     compiled = compile_schema(cls._SPEC)
     given = overrides(case)
-    expected = {}
+    expected: dict[str, Any] = {}
     for name, param in compiled.parameters.items():
         param_type = TYPES[param.spec.type]
-        source = given[name] if param.spec.required else param.spec.default
+        if param.spec.optional and name not in given:
+            expected[name] = None  # declared by type only: not set
+            continue
+        source = given[name] if name in given else param.spec.default
         expected[name] = param_type.coerce_default(source)
     for name, entry in expand(compiled, expected).items():  # entries of mapped groups
         expected[name] = TYPES[entry.spec.type].coerce_default(entry.spec.default)
-    parameters = [
-        Parameter(
-            name,
-            Parameter.Type(TYPES[compiled.parameters[name].spec.type].ros_type),
-            TYPES[compiled.parameters[name].spec.type].to_ros(expected[name]),
-        )
-        for name in given
-    ]
+    parameters = [ros_parameter(compiled.parameters[name], name, expected[name]) for name in given]
     node = ros.node(parameter_overrides=parameters)
     cfg = cls.declare(node)
-    assert mismatches(read_back(ros, node, cfg), expected) == {}
+    # A parameter whose condition (when) does not hold is not declared, and reads None.
+    left_out = [n for n, p in compiled.parameters.items() if not p.spec.declared_with(expected)]
+    assert [get_path(cfg, compiled.parameters[n].attribute_path) for n in left_out] == [
+        None for _ in left_out
+    ]
+    assert not any(node.has_parameter(name) for name in left_out)
+    declared = {n: v for n, v in expected.items() if n not in left_out}
+    assert mismatches(read_back(ros, node, cfg), declared) == {}
     assert cls.defaults(given).to_dict() == cfg.to_dict()

@@ -297,6 +297,6 @@ def test_a_rule_reading_a_parameter_left_out_is_not_reported_again(tmp_path: Pat
         genparams.generate(schema)
     assert str(caught.value).splitlines() == [
         f"{schema}:4:17: parameters.speed.type: 'integer' is not one of bool, int, double, "
-        "string, byte_array, bool_array, int_array, double_array, string_array "
+        "string, byte_array, bool_array, int_array, double_array, string_array, any "
         "(did you mean 'int'?)"
     ]

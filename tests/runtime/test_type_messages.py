@@ -151,7 +151,43 @@ def test_the_table_describes_each_type() -> None:
         "int_array": (True, "int", True, 7),
         "double_array": (True, "double", True, 8),
         "string_array": (True, "string", False, 9),
+        "any": (False, "any", False, 0),  # dynamic typing: each value has its own type
     }
     assert {t: p.name for t, p in TYPES_BY_ROS_TYPE.items()} == {
-        p.ros_type: name for name, p in TYPES.items()
+        p.ros_type: name for name, p in TYPES.items() if not p.is_dynamic
     }
+
+
+@pytest.mark.parametrize(
+    ("value", "kind", "typed"),
+    [
+        (True, "bool", True),
+        (3, "int", 3),
+        (0.5, "double", 0.5),
+        ("x", "string", "x"),
+        ([1, 2], "int_array", (1, 2)),
+        ([b"\x01", b"\x02"], "byte_array", b"\x01\x02"),
+        ([], "byte_array", b""),  # rclpy's inference for an empty list
+        (["a"], "string_array", ("a",)),
+    ],
+)
+def test_a_value_of_type_any_has_its_own_type(value: Any, kind: str, typed: Any) -> None:
+    dynamic = TYPES["any"]
+    converted = dynamic.from_ros(value)
+    assert converted == typed and type(converted) is type(typed)
+    assert dynamic.of_value(converted).name == kind
+
+
+@pytest.mark.parametrize(
+    ("value", "message"),
+    [
+        ([1, "a"], "the items of a list must share one type"),
+        ([1, 2.0], "the items of a list must share one type"),  # ROS does not convert
+        ({"a": 1}, "expected a value of a ROS parameter type"),
+        (None, "expected a value of a ROS parameter type"),
+    ],
+)
+def test_a_value_of_type_any_must_be_a_ros_value(value: Any, message: str) -> None:
+    with pytest.raises(ValueTypeError, match=message):
+        TYPES["any"].from_ros(value)
+    assert TYPES["any"].coerce_default([1, 2.0]) == (1.0, 2.0)  # a schema default may mix

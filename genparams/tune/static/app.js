@@ -23,11 +23,14 @@ function metas(schema, parameters) {
   for (const group of maps) {
     for (const key of values.get(group.for_each) || []) {
       for (const field of group.fields)
-        byName.set(`${group.path}.${key}.${field.name}`, { ...field, schema: true, mapped: group.path, key });
+        byName.set([group.path, key, field.name].filter(Boolean).join("."), { ...field, schema: true, mapped: group.path, key });
     }
   }
   for (const p of parameters) {
-    if (byName.has(p.name)) continue;
+    const known = byName.get(p.name);
+    // A parameter of type any is edited in the type of its current value.
+    if (known?.type === "any" && p.type !== "unset") byName.set(p.name, { ...known, type: p.type });
+    if (known) continue;
     byName.set(p.name, { name: p.name, type: p.type, read_only: p.read_only, range: p.range,
       description: p.description, constraints: p.constraints ? [p.constraints] : [], schema: false });
   }
@@ -53,7 +56,7 @@ function renderDiff() {
   const { byName, values } = page.view.known;
   const rows = [];
   for (const [name, meta] of byName) {
-    if (!meta.schema || meta.required || !values.has(name)) continue;
+    if (!meta.schema || meta.required || meta.optional || !values.has(name)) continue;
     if (JSON.stringify(meta.default) !== JSON.stringify(values.get(name)))
       rows.push([name, meta.default, values.get(name)]);
   }
@@ -203,8 +206,8 @@ function renderNode(data) {
   const handlers = { readOnly: page.readOnly, onEdit, onDraft, onReset };
   const rowFor = (name) => {
     const meta = known.byName.get(name);
-    const label = meta.key !== undefined ? meta.name : name.slice(namespaceOf(name).length + (namespaceOf(name) ? 1 : 0));
-    return row(meta, name, label, known.values.get(name), { ...handlers, hasDefault: meta.schema && !meta.required });
+    const label = meta.key !== undefined ? meta.name || meta.key : name.slice(namespaceOf(name).length + (namespaceOf(name) ? 1 : 0));
+    return row(meta, name, label, known.values.get(name), { ...handlers, hasDefault: meta.schema && !meta.required && !meta.optional });
   };
   const sections = new Map();
   for (const name of [...known.values.keys()].sort()) {
@@ -220,7 +223,7 @@ function renderNode(data) {
   for (const group of known.maps) {
     const keys = known.values.get(group.for_each) || [];
     builders.push([keys.length * group.fields.length, () => mapGroup(group, keys,
-      (key) => group.fields.map((f) => rowFor(`${group.path}.${key}.${f.name}`)),
+      (key) => group.fields.map((f) => rowFor([group.path, key, f.name].filter(Boolean).join("."))),
       { readOnly: page.readOnly,
         onAddKey: (g, key) => setKeys(g, [...(known.values.get(g.for_each) || []), key]),
         onRemoveKey: (g, key) => setKeys(g, (known.values.get(g.for_each) || []).filter((k) => k !== key)) })]);
