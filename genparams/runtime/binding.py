@@ -12,7 +12,7 @@ import collections
 import functools
 import threading
 import traceback
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any, Generic, TypeVar
 
 from rclpy.node import Node
@@ -33,7 +33,14 @@ from genparams.runtime.params import Params
 from genparams.runtime.rewrites import add_rewrite, typed_empty_arrays
 from genparams.runtime.rule_check import broken_rules
 from genparams.runtime.spec import CompiledParam, compile_schema
-from genparams.runtime.tree import build_tree, copy_node, field_names, get_path, replace_values
+from genparams.runtime.tree import (
+    build_tree,
+    copy_node,
+    field_names,
+    get_path,
+    replace_values,
+    reuse_values,
+)
 from genparams.runtime.values import same_value
 
 P = TypeVar("P", bound=Params)
@@ -60,6 +67,11 @@ class Binding(Generic[P]):
         self.subscribers: list[Callable[[Changes[P]], None]] = []
         self.current: P  # the frozen root: snapshots hand this out
         self.live: P  # the root users hold: top-level attributes follow `current`
+        # The root `current` replaced, which no reader can reach any more: the next
+        # commit brings it up to date (`behind`: the changes it misses) instead of
+        # copying `current` (see tree.reuse_values); None after a change of shape.
+        self.spare: P | None = None
+        self.behind: dict[tuple[str, ...], Any] = {}
         self.mapped: MappedEntries | None = None
         self.has_rules = False
         self.has_configure_only = False
@@ -184,8 +196,14 @@ class Binding(Generic[P]):
                 if subscribed:
                     changed.append(Change(param.name, old, value))
         if paths:
-            after = replace_values(before, paths, extra=("_binding",))
-            self.publish(before, after, changed, {path[0] for path in paths})
+            if self.spare is None:
+                after = replace_values(before, paths, extra=("_binding",))
+                self.publish(before, after, changed, paths)
+            else:
+                behind = self.behind
+                behind.update(paths)
+                self.spare = reuse_values(self.spare, behind, extra=("_binding",))
+                self.publish(before, self.spare, changed, paths, behind)
         return True
 
     def reshape(self, updates: dict[CompiledParam, Any]) -> None:
@@ -217,7 +235,9 @@ class Binding(Generic[P]):
         after = build_tree(
             type(before), spec.groups, plan.values, extra={"_binding": None}, maps=spec.maps
         )
-        self.publish(before, after, plan.changed, field_names(type(after)))
+        self.publish(
+            before, after, plan.changed, None, {(head,): None for head in field_names(type(after))}
+        )
         return True
 
     def commit_values(self, updates: dict[CompiledParam, Any]) -> None:
@@ -227,14 +247,28 @@ class Binding(Generic[P]):
         changed = [
             Change(p.name, get_path(before, p.attribute_path), v) for p, v in updates.items()
         ]
-        self.publish(before, after, changed, {path[0] for path in paths})
+        self.publish(before, after, changed, paths)
 
-    def publish(self, before: P, after: P, changed: list[Change], heads: Iterable[str]) -> None:
-        """Make ``after`` current (``heads``: the top-level attributes it replaced); queue
-        the delivery to subscribers, made in the node's order of changes."""
+    def publish(
+        self,
+        before: P,
+        after: P,
+        changed: list[Change],
+        paths: dict[tuple[str, ...], Any] | None,
+        replaced: Mapping[tuple[str, ...], Any] | None = None,
+    ) -> None:
+        """Make ``after`` current: ``before`` with ``paths`` changed (None: reshaped), and
+        the live view follows every top-level attribute under ``replaced`` (default
+        ``paths``); ``before`` becomes the spare. Queue the delivery to subscribers,
+        made in the node's order of changes."""
         self.current = after
-        for head in heads:
-            object.__setattr__(self.live, head, getattr(after, head))
+        live = self.live
+        for head in {path[0] for path in replaced or paths or ()}:
+            object.__setattr__(live, head, getattr(after, head))
+        if paths is None:
+            self.spare, self.behind = None, {}
+        else:
+            self.spare, self.behind = before, paths
         if self.subscribers:
             self.sets.deliver(
                 functools.partial(self.notify, Changes(before, after, tuple(changed)))
