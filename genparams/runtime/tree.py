@@ -8,7 +8,6 @@ shared mutable state) and one set costs O(depth x group width), not O(N).
 from __future__ import annotations
 
 import sys
-import sysconfig
 from collections.abc import Callable, Collection, Iterable, Iterator, Mapping
 from typing import Any, ClassVar, TypeGuard, TypeVar, cast, final
 
@@ -343,7 +342,8 @@ def _only_holder_count() -> int:
     """What ``sys.getrefcount`` reads for a node that one attribute holds, inside a
     function that has it in one variable; 0 (never reuse) where counts do not tell
     (not CPython, or a free-threaded build)."""
-    if sys.implementation.name != "cpython" or sysconfig.get_config_var("Py_GIL_DISABLED"):
+    gil = getattr(sys, "_is_gil_enabled", lambda: True)()  # False in a free-threaded build
+    if sys.implementation.name != "cpython" or not gil:
         return 0
     holder = _Holder()
     holder.node = object()
