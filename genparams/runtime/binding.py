@@ -44,6 +44,7 @@ from genparams.runtime.tree import (
 from genparams.runtime.values import same_value
 
 P = TypeVar("P", bound=Params)
+_NOT_SET = Parameter.Type.NOT_SET  # reading an Enum member costs on every set
 
 
 def check_prefix(prefix: str) -> str:
@@ -191,10 +192,11 @@ class Binding(Generic[P]):
         for param, value in updates.items():
             path = param.attribute_path
             old = get_path(before, path)
-            if old != value and not same_value(old, value):
-                paths[path] = value
-                if subscribed:
-                    changed.append(Change(param.name, old, value))
+            if old == value or ((old != old or type(old) is tuple) and same_value(old, value)):
+                continue  # no change: only a NaN or an array may equal without ==
+            paths[path] = value
+            if subscribed:
+                changed.append(Change(param.name, old, value))
         if paths:
             if self.spare is None:
                 after = replace_values(before, paths, extra=("_binding",))
@@ -263,8 +265,8 @@ class Binding(Generic[P]):
         made in the node's order of changes."""
         self.current = after
         live = self.live
-        for head in {path[0] for path in replaced or paths or ()}:
-            object.__setattr__(live, head, getattr(after, head))
+        for path in replaced or paths or ():  # a head set twice is set to the same group
+            object.__setattr__(live, path[0], getattr(after, path[0]))
         if paths is None:
             self.spare, self.behind = None, {}
         else:
@@ -306,7 +308,7 @@ def check_each(
         param = owned.get(parameter.name)
         if param is None:
             continue
-        if parameter.type_ == Parameter.Type.NOT_SET:
+        if parameter.type_ is _NOT_SET:
             reasons.append(f"{parameter.name}: cannot be undeclared")
             continue
         try:
