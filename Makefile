@@ -7,7 +7,7 @@ PYTHON := $(VENV)/bin/python
 EXAMPLE := examples/camera_node
 
 
-.PHONY: venv lock test-latest browser demo import-node-demo demo-arm tour test check lint typecheck golden screenshots docs bench bench-quick bench-profile mutate mutate-sample clean
+.PHONY: venv lock test-latest browser demo import-node-demo demo-arm tour test check lint typecheck golden screenshots docs bench bench-targets bench-quick bench-profile mutate mutate-sample clean
 
 # The development environment installs from requirements/dev.lock (every pin with its
 # hashes, from PyPI only); uv itself comes from requirements/uv.lock. genparams goes in
@@ -96,9 +96,13 @@ docs: venv
 	$(PYTHON) -m sphinx -W --keep-going -b html docs build/docs/html
 
 ## Benchmarks against hand-written rclpy at 10 to 10,000 parameters: docs/benchmarks.md and .csv.
-bench: venv browser
+bench: venv browser bench-targets
 	$(PYTHON) -m bench
 	$(PYTHON) -m bench.tune
+
+## The runtime's targets against hand-written rclpy, each printed MET or MISSED with its spread (~3 min).
+bench-targets: venv
+	$(PYTHON) -m bench.targets
 
 ## The benchmarks up to 1,000 parameters with three repeats, into build/bench-quick/.
 bench-quick: venv

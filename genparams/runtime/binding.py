@@ -12,7 +12,7 @@ import collections
 import functools
 import threading
 import traceback
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any, Generic, TypeVar
 
 from rclpy.node import Node
@@ -33,10 +33,18 @@ from genparams.runtime.params import Params
 from genparams.runtime.rewrites import add_rewrite, typed_empty_arrays
 from genparams.runtime.rule_check import broken_rules
 from genparams.runtime.spec import CompiledParam, compile_schema
-from genparams.runtime.tree import build_tree, copy_node, field_names, get_path, replace_values
+from genparams.runtime.tree import (
+    build_tree,
+    copy_node,
+    field_names,
+    get_path,
+    replace_values,
+    reuse_values,
+)
 from genparams.runtime.values import same_typed_value, same_value
 
 P = TypeVar("P", bound=Params)
+_NOT_SET = Parameter.Type.NOT_SET  # reading an Enum member costs on every set
 
 
 def check_prefix(prefix: str) -> str:
@@ -60,6 +68,11 @@ class Binding(Generic[P]):
         self.subscribers: list[Callable[[Changes[P]], None]] = []
         self.current: P  # the frozen root: snapshots hand this out
         self.live: P  # the root users hold: top-level attributes follow `current`
+        # The root `current` replaced, which no reader can reach any more: the next
+        # commit brings it up to date (`behind`: the changes it misses) instead of
+        # copying `current` (see tree.reuse_values); None after a change of shape.
+        self.spare: P | None = None
+        self.behind: dict[tuple[str, ...], Any] = {}
         self.mapped: MappedEntries | None = None
         self.has_rules = False
         self.has_configure_only = False
@@ -180,15 +193,23 @@ class Binding(Generic[P]):
         for param, value in updates.items():
             path = param.attribute_path
             old = get_path(before, path)
-            if (old != value and not same_value(old, value)) or (
-                param.type.is_dynamic and not same_typed_value(old, value)
-            ):
-                paths[path] = value
-                if subscribed:
-                    changed.append(Change(param.name, old, value))
+            unchanged = old == value or (
+                (old != old or type(old) is tuple) and same_value(old, value)
+            )  # only a NaN or an array may equal without ==
+            if unchanged and (not param.type.is_dynamic or same_typed_value(old, value)):
+                continue  # no change (a dynamic parameter's 1 -> 1.0 is one)
+            paths[path] = value
+            if subscribed:
+                changed.append(Change(param.name, old, value))
         if paths:
-            after = replace_values(before, paths, extra=("_binding",))
-            self.publish(before, after, changed, {path[0] for path in paths})
+            if self.spare is None:
+                after = replace_values(before, paths, extra=("_binding",))
+                self.publish(before, after, changed, paths)
+            else:
+                behind = self.behind
+                behind.update(paths)
+                self.spare = reuse_values(self.spare, behind, extra=("_binding",))
+                self.publish(before, self.spare, changed, paths, behind)
         return True
 
     def reshape(self, updates: dict[CompiledParam, Any]) -> None:
@@ -220,7 +241,9 @@ class Binding(Generic[P]):
         after = build_tree(
             type(before), spec.groups, plan.values, extra={"_binding": None}, maps=spec.maps
         )
-        self.publish(before, after, plan.changed, field_names(type(after)))
+        self.publish(
+            before, after, plan.changed, None, {(head,): None for head in field_names(type(after))}
+        )
         return True
 
     def commit_values(self, updates: dict[CompiledParam, Any]) -> None:
@@ -230,14 +253,28 @@ class Binding(Generic[P]):
         changed = [
             Change(p.name, get_path(before, p.attribute_path), v) for p, v in updates.items()
         ]
-        self.publish(before, after, changed, {path[0] for path in paths})
+        self.publish(before, after, changed, paths)
 
-    def publish(self, before: P, after: P, changed: list[Change], heads: Iterable[str]) -> None:
-        """Make ``after`` current (``heads``: the top-level attributes it replaced); queue
-        the delivery to subscribers, made in the node's order of changes."""
+    def publish(
+        self,
+        before: P,
+        after: P,
+        changed: list[Change],
+        paths: dict[tuple[str, ...], Any] | None,
+        replaced: Mapping[tuple[str, ...], Any] | None = None,
+    ) -> None:
+        """Make ``after`` current: ``before`` with ``paths`` changed (None: reshaped), and
+        the live view follows every top-level attribute under ``replaced`` (default
+        ``paths``); ``before`` becomes the spare. Queue the delivery to subscribers,
+        made in the node's order of changes."""
         self.current = after
-        for head in heads:
-            object.__setattr__(self.live, head, getattr(after, head))
+        live = self.live
+        for path in replaced or paths or ():  # a head set twice is set to the same group
+            object.__setattr__(live, path[0], getattr(after, path[0]))
+        if paths is None:
+            self.spare, self.behind = None, {}
+        else:
+            self.spare, self.behind = before, paths
         if self.subscribers:
             self.sets.deliver(
                 functools.partial(self.notify, Changes(before, after, tuple(changed)))
@@ -275,7 +312,7 @@ def check_each(
         param = owned.get(parameter.name)
         if param is None:
             continue
-        if parameter.type_ == Parameter.Type.NOT_SET:
+        if parameter.type_ is _NOT_SET:
             reasons.append(f"{parameter.name}: cannot be undeclared")
             continue
         try:

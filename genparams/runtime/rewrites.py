@@ -27,14 +27,12 @@ Rewrite = Callable[[list[Parameter]], list[Parameter]]
 _ATTRIBUTE = "_genparams_rewrites"
 _INSTALLING = threading.Lock()
 
-_ARRAY_TYPES = frozenset(
-    {
-        Parameter.Type.BYTE_ARRAY,
-        Parameter.Type.BOOL_ARRAY,
-        Parameter.Type.INTEGER_ARRAY,
-        Parameter.Type.DOUBLE_ARRAY,
-        Parameter.Type.STRING_ARRAY,
-    }
+_ARRAY_TYPES = (
+    Parameter.Type.BYTE_ARRAY,
+    Parameter.Type.BOOL_ARRAY,
+    Parameter.Type.INTEGER_ARRAY,
+    Parameter.Type.DOUBLE_ARRAY,
+    Parameter.Type.STRING_ARRAY,
 )
 
 
@@ -85,8 +83,15 @@ def typed_empty_arrays(declared: Mapping[str, CompiledParam]) -> Rewrite:
     return rewrite
 
 
+_BYTES, _BOOLS, _INTS, _DOUBLES, _STRINGS = _ARRAY_TYPES
+
+
 def _is_empty_array(parameter: Parameter) -> bool:
-    return parameter.type_ in _ARRAY_TYPES and len(parameter.value) == 0
+    # Identity tests: `in` a set of Enum members calls Enum.__hash__, in Python, every set.
+    kind = parameter.type_
+    return (
+        kind is _DOUBLES or kind is _INTS or kind is _STRINGS or kind is _BOOLS or kind is _BYTES
+    ) and len(parameter.value) == 0
 
 
 def _retyped(parameter: Parameter, declared: Mapping[str, CompiledParam]) -> Parameter:

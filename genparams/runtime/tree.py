@@ -7,6 +7,7 @@ shared mutable state) and one set costs O(depth x group width), not O(N).
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Callable, Collection, Iterable, Iterator, Mapping
 from typing import Any, ClassVar, TypeGuard, TypeVar, cast, final
 
@@ -272,6 +273,98 @@ def replace_values(root: G, updates: Mapping[tuple[str, ...], Any], extra: Itera
     return new
 
 
+def reuse_values(root: G, updates: Mapping[tuple[str, ...], Any], extra: Iterable[str] = ()) -> G:
+    """``root`` with the leaves at the attribute paths replaced, changed in place where
+    nobody but its parent can see a group, copied where anyone else holds it.
+
+    For a tree no reader can reach any more (the root a binding replaced): a group
+    referenced only by its parent (``root``: only by the one attribute the caller
+    passes it from, as in ``reuse_values(holder.spare, ...)``) is reachable by no
+    thread but through that parent, so writing it in place is invisible, and no
+    thread can start holding it meanwhile. A group anyone else holds (a snapshot,
+    ``cam = cfg.camera``, an ``on_change`` record, the live view, the other root)
+    has a higher reference count and is copied, as ``replace_values`` copies; so
+    are its descendants on the path, whose count the copy raises. Maps of entries
+    are always copied (an iterator over one holds its dict, not the map).
+    """
+    if _ONLY_HOLDER and sys.getrefcount(root) == _ONLY_HOLDER and not _is_map(root):
+        new = root
+    else:
+        new = copy_node(root, extra)
+    if len(updates) == 1:  # one set: no grouping by head
+        ((path, value),) = updates.items()
+        _reuse_below(new, path, value)
+        return new
+    by_head: dict[str, dict[tuple[str, ...], Any]] = {}
+    for path, value in updates.items():
+        if len(path) > 1:
+            by_head.setdefault(path[0], {})[path[1:]] = value
+        elif _is_map(new):
+            new._entries[path[0]] = value
+        else:
+            object.__setattr__(new, path[0], value)
+    for name, sub_updates in by_head.items():
+        child = reuse_values(_child(new, name), sub_updates)
+        if _is_map(new):
+            new._entries[name] = child
+        else:
+            object.__setattr__(new, name, child)
+    return new
+
+
+def _reuse_below(node: Any, path: tuple[str, ...], value: Any) -> None:
+    """``reuse_values`` of one path below a group already written in place or copied."""
+    refs = sys.getrefcount
+    for name in path[:-1]:
+        parent = node
+        if type(parent) is GroupMap:
+            node = parent._entries[name]
+        else:
+            node = getattr(parent, name)
+        if refs(node) == _ONLY_HOLDER and type(node) is not GroupMap:
+            continue  # written in place
+        node = copy_node(node)
+        if type(parent) is GroupMap:
+            parent._entries[name] = node
+        else:
+            object.__setattr__(parent, name, node)
+    if type(node) is GroupMap:
+        node._entries[path[-1]] = value
+    else:
+        object.__setattr__(node, path[-1], value)
+
+
+class _Holder:
+    __slots__ = ("node",)
+    node: object
+
+
+def _held_by(node: object) -> int:
+    return sys.getrefcount(node)
+
+
+def _only_holder_count() -> int:
+    """What ``sys.getrefcount`` reads for a node that one attribute holds, inside a
+    function that has it in one variable; 0 (never reuse) where counts do not tell
+    (not CPython, or a free-threaded build)."""
+    gil = getattr(sys, "_is_gil_enabled", lambda: True)()  # False in a free-threaded build
+    if sys.implementation.name != "cpython" or not gil:
+        return 0
+    holder = _Holder()
+    holder.node = object()
+    alone = _held_by(holder.node)
+    node = holder.node
+    in_variable = sys.getrefcount(node)  # in a variable here, as a parameter there
+    also_held = [node]
+    del node
+    if _held_by(holder.node) != alone + 1 or in_variable != alone or not also_held:
+        return 0
+    return alone
+
+
+_ONLY_HOLDER = _only_holder_count()
+
+
 def _child(node: Any, name: str) -> Any:
     return node[name] if _is_map(node) else getattr(node, name)
 
@@ -293,8 +386,8 @@ def _replace_one(root: G, path: tuple[str, ...], value: Any, extra: tuple[str, .
 def get_path(root: Group, path: tuple[str, ...]) -> Any:
     """The value at an attribute path; through a mapped group, the path holds the key."""
     node: Any = root
-    for name in path:
-        node = _child(node, name)
+    for name in path:  # _child inlined: every set reads the old value
+        node = node._entries[name] if type(node) is GroupMap else getattr(node, name)
     return node
 
 

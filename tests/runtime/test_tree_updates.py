@@ -2,7 +2,19 @@
 
 from __future__ import annotations
 
-from genparams.runtime.tree import Group, build_tree, copy_node, replace_values, to_dict
+from typing import Any
+
+import pytest
+
+from genparams.runtime.tree import (
+    Group,
+    GroupMap,
+    build_tree,
+    copy_node,
+    replace_values,
+    reuse_values,
+    to_dict,
+)
 
 
 class Pid(Group):
@@ -81,3 +93,47 @@ def test_copy_of_a_one_field_group_and_of_extra_slots() -> None:
     assert single == root.single and single is not root.single
     copied = copy_node(root, ("_binding",))
     assert copied == root and copied._binding == "marker"  # type: ignore[attr-defined]
+
+
+class Spare:
+    """What a binding keeps: the one reference to a root no reader can reach."""
+
+    def __init__(self, root: Any) -> None:
+        self.root = root
+
+
+@pytest.mark.parametrize(
+    "updates",
+    [{("arm", "pid", "kp"): 2.0}, {("arm", "pid", "kp"): 2.0, ("arm", "name"): "right"}],
+    ids=["one path", "two paths"],
+)
+def test_reuse_writes_in_place_what_nobody_else_holds(updates: dict[Any, Any]) -> None:
+    spare = Spare(tree())
+    root, arm, pid = spare.root, spare.root.arm, spare.root.arm.pid
+    del arm, pid  # only the tree holds them now
+    ids = id(root), id(root.arm), id(root.arm.pid)
+    del root
+    after = reuse_values(spare.root, updates, extra=("_binding",))
+    assert (id(after), id(after.arm), id(after.arm.pid)) == ids
+    assert after.arm.pid.kp == 2.0 and after._binding == "marker"
+
+
+@pytest.mark.parametrize("held", ["root", "arm", "pid"])
+def test_reuse_copies_what_anyone_holds_and_everything_below_it(held: str) -> None:
+    spare = Spare(tree())
+    kept = {"root": spare.root, "arm": spare.root.arm, "pid": spare.root.arm.pid}[held]
+    shown = repr(kept)
+    after = reuse_values(spare.root, {("arm", "pid", "kp"): 2.0}, extra=("_binding",))
+    assert after.arm.pid.kp == 2.0
+    assert repr(kept) == shown  # what was held was copied, not written
+    assert all(group is not kept for group in (after, after.arm, after.arm.pid))
+
+
+def test_reuse_copies_maps_of_entries() -> None:
+    entries = GroupMap({"a": build_tree(Single, {}, {"only": 1})})
+    holder = Spare(build_tree(Root, GROUPS, VALUES, extra={"_binding": None}))
+    object.__setattr__(holder.root, "single", entries)
+    iterator = iter(holder.root.single)  # holds the map's dict, not the map
+    after = reuse_values(holder.root, {("single", "a", "only"): 2})
+    assert after.single["a"].only == 2 and entries["a"].only == 1
+    assert list(iterator) == ["a"]
