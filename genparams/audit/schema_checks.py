@@ -2,7 +2,8 @@
 
 The schema message carries each validator in its schema spelling, so the audit
 rebuilds exactly the checks the node runs (``compile_param``) and the rules it
-evaluates (``compile_rule``), without the schema file.
+evaluates (``compile_rule``), without the schema file. A value equals its
+default as the runtime counts a change: a NaN default holding NaN is no drift.
 """
 
 from __future__ import annotations
@@ -13,32 +14,10 @@ from typing import Any
 from genparams.audit.findings import DRIFT_DEFAULT, NOT_CHECKED, VIOLATION, Finding
 from genparams.runtime.naming import strip_prefix
 from genparams.runtime.rules import RuleError, compile_rule
-from genparams.runtime.spec import CompiledParam, ParamSpec, compile_param
-from genparams.runtime.types import TYPES
+from genparams.runtime.schema_message import param_from_json
+from genparams.runtime.spec import CompiledParam, compile_param
 from genparams.runtime.validators import Custom
-
-
-def frozen(value: Any) -> Any:
-    """JSON lists as the tuples a ParamSpec holds (dicts, such as length's, stay)."""
-    if isinstance(value, list):
-        return tuple(frozen(item) for item in value)
-    return value
-
-
-def param_from_json(described: Mapping[str, Any], name: str) -> ParamSpec:
-    kind = TYPES[described["type"]]
-    default = None if described["required"] else kind.coerce_default(described["default"])
-    span = described.get("range")
-    return ParamSpec(
-        name=name,
-        type=described["type"],
-        default=default,
-        required=described["required"],
-        read_only=described["read_only"],
-        range=None if span is None else (span["min"], span["max"], span["step"]),
-        choices=None if described["choices"] is None else frozen(described["choices"]),
-        validators=tuple((rule, frozen(arg)) for rule, arg in described["validators"]),
-    )
+from genparams.runtime.values import same_value
 
 
 def importable(check: Any) -> bool:
@@ -99,7 +78,7 @@ def check_value(
         if reason is not None:
             found.append(Finding(node, VIOLATION, name, reason, check.describe(), raw))
     spec = compiled.spec
-    if not spec.required and value != spec.default:
+    if not spec.required and not same_value(value, spec.default):
         found.append(
             Finding(node, DRIFT_DEFAULT, name, "differs from the schema default", spec.default, raw)
         )

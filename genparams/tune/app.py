@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import asyncio
 import hmac
-import json
 from collections.abc import AsyncIterator
 from pathlib import Path
 from typing import Any
@@ -17,12 +16,14 @@ from typing import Any
 from starlette.applications import Starlette
 from starlette.concurrency import run_in_threadpool
 from starlette.requests import Request
-from starlette.responses import FileResponse, JSONResponse, Response, StreamingResponse
+from starlette.responses import FileResponse, Response, StreamingResponse
 from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 
 from genparams import __version__
+from genparams.runtime.json_codec import API_LIMITS, dumps, loads
 from genparams.tune.graph import Graph, ros_parameter
+from genparams.tune.json_response import JSONResponse
 from genparams.tune.params_dump import params_file_text
 
 STATIC = Path(__file__).resolve().parent / "static"
@@ -82,7 +83,10 @@ class TuneApp:
         names = await run_in_threadpool(self.graph.node_names)
         if self.only_nodes:
             names = [n for n in names if n in self.only_nodes]
-        listed = [{"name": n, "genparams": self.graph.schema(n) is not None} for n in names]
+        listed = []
+        for n in names:
+            schema, problem = self.graph.schema_state(n)
+            listed.append({"name": n, "genparams": schema is not None, "schema_problem": problem})
         return JSONResponse({"nodes": listed})
 
     async def node(self, request: Request) -> Response:
@@ -93,8 +97,9 @@ class TuneApp:
             parameters = await run_in_threadpool(self.graph.read_node, name)
         except TimeoutError as exc:
             return JSONResponse({"error": str(exc)}, status_code=504)
+        schema, problem = self.graph.schema_state(name)
         return JSONResponse(
-            {"node": name, "schema": self.graph.schema(name), "parameters": parameters}
+            {"node": name, "schema": schema, "schema_problem": problem, "parameters": parameters}
         )
 
     async def set(self, request: Request) -> Response:
@@ -103,7 +108,7 @@ class TuneApp:
         if self.read_only:
             return JSONResponse({"error": "this page is read-only"}, status_code=403)
         try:
-            body = await request.json()
+            body = loads(await request.body(), API_LIMITS)
             node = str(body["node"])
             parameters = [ros_parameter(p["name"], p["type"], p["value"]) for p in body["params"]]
             atomic = bool(body.get("atomic", False))
@@ -151,7 +156,7 @@ class TuneApp:
                     except TimeoutError:
                         yield ": keepalive\n\n"
                         continue
-                    yield f"data: {json.dumps(event)}\n\n"
+                    yield f"data: {dumps(event)}\n\n"
             finally:
                 unsubscribe()
 

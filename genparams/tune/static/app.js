@@ -2,6 +2,7 @@
 import { api } from "./api.js";
 import { problem } from "./checks.js";
 import { diffTable, el, mapGroup, row, section } from "./form.js";
+import { parseJson } from "./json.js";
 
 const page = { readOnly: false, node: null, view: null, pending: new Map(), reload: null };
 
@@ -149,8 +150,12 @@ function renderNode(data) {
   const diff = el("div", { class: "diff-box" });
   const body = el("div", { class: "sections" });
   const kind = data.schema ? `genparams ${data.schema.genparams} · schema ${data.schema.hash}` : "plain rclpy node";
+  // A schema message that is malformed or not the node's own is shown, never used.
+  const refused = data.schema_problem
+    ? el("p", { class: "schema-problem", "data-schema-problem": true, text: `schema not used: ${data.schema_problem}` })
+    : null;
   const form = el("form", { "data-node": data.node, class: data.schema ? "genparams" : "plain" },
-    el("h2", { text: data.node }), el("p", { class: "hint", text: kind }),
+    el("h2", { text: data.node }), el("p", { class: "hint", text: kind }), refused,
     el("div", { class: "toolbar" }, apply, download), body,
     el("h3", { text: "Differences from the defaults" }), diff);
   form.addEventListener("submit", (event) => event.preventDefault());
@@ -215,13 +220,15 @@ function onEvent(event) {
 async function refreshNodes() {
   const { nodes } = await api.nodes();
   const list = document.getElementById("nodes");
-  const shown = [...list.children].map((li) => `${li.dataset.nodeLink}|${li.dataset.genparams}`).join();
-  if (shown === nodes.map((n) => `${n.name}|${n.genparams}`).join()) return;
+  const shown = [...list.children].map((li) => `${li.dataset.nodeLink}|${li.dataset.genparams}|${li.title}`).join();
+  if (shown === nodes.map((n) => `${n.name}|${n.genparams}|${n.schema_problem || ""}`).join()) return;
   list.replaceChildren(...nodes.map((n) => {
     const link = el("a", { href: `#${n.name}`, text: n.name });
     link.addEventListener("click", () => openNode(n.name));
+    const badge = n.schema_problem ? el("span", { class: "badge schema-problem", text: "bad schema" })
+      : n.genparams ? el("span", { class: "badge", text: "schema" }) : null;
     return el("li", { "data-node-link": n.name, "data-genparams": String(n.genparams),
-      class: n.name === page.node ? "selected" : "" }, link, n.genparams ? el("span", { class: "badge", text: "schema" }) : null);
+      title: n.schema_problem || "", class: n.name === page.node ? "selected" : "" }, link, badge);
   }));
 }
 
@@ -232,7 +239,7 @@ async function main() {
   const config = await api.config();
   page.readOnly = config.read_only;
   document.getElementById("mode").hidden = !page.readOnly;
-  api.events().onmessage = (message) => onEvent(JSON.parse(message.data));
+  api.events().onmessage = (message) => onEvent(parseJson(message.data));
   await Promise.all([refreshNodes(), wanted ? openNode(wanted, loading) : null]);
   setInterval(refreshNodes, 1000);
   // Milliseconds from navigation to a usable page, after the first paint of the form.
