@@ -1,7 +1,7 @@
 """Real nodes for the tuning and audit tests, in a process of their own.
 
 ``python -m tests.tune.demo_nodes NAME:KIND ...`` starts one node per argument
-(KIND: camera, arm, motion, plain, loose, or wideN with N parameters) and prints
+(KIND: camera, arm, motion, nonfinite, plain, loose, or wideN with N parameters) and prints
 "ready" once every node is declared. ROS arguments for every node follow ``--``.
 """
 
@@ -23,6 +23,7 @@ SCHEMAS = {
     "camera": ROOT / "examples/camera_node/camera_driver.yaml",
     "arm": ROOT / "examples/arm/arm.yaml",
     "motion": ROOT / "examples/motion/motion.yaml",
+    "nonfinite": ROOT / "tests/tune/nonfinite.yaml",
 }
 
 
