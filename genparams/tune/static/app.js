@@ -2,7 +2,7 @@
 import { api } from "./api.js";
 import { problem } from "./checks.js";
 import { diffTable, el, mapGroup, row, section } from "./form.js";
-import { parseJson } from "./json.js";
+import { parseJson, stringifyJson } from "./json.js";
 
 const page = { readOnly: false, node: null, view: null, pending: new Map(), reload: null };
 
@@ -52,7 +52,7 @@ function renderDiff() {
   const rows = [];
   for (const [name, meta] of byName) {
     if (!meta.schema || meta.required || !values.has(name)) continue;
-    if (JSON.stringify(meta.default) !== JSON.stringify(values.get(name)))
+    if (stringifyJson(meta.default) !== stringifyJson(values.get(name)))  // NaN equals NaN, inf is not -inf
       rows.push([name, meta.default, values.get(name)]);
   }
   page.view.diff.replaceChildren(diffTable(rows));
