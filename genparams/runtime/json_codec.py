@@ -97,16 +97,23 @@ def dumps(
 
 # ---- reading ---------------------------------------------------------------------------
 
-# A string (closed or not) or one bracket: strings are skipped whole, in one linear pass.
-_STRING_OR_BRACKET = re.compile(r'"[^"\\]*(?:\\.[^"\\]*)*"?|([\[\]{}])', re.DOTALL)
-_STEP = {"[": 1, "{": 1, "]": -1, "}": -1, "": 0}
+_NOT_STRUCTURE = bytes(set(range(256)) - set(b'[]{}"'))
+_STRING = re.compile(rb'"[^"]*"')
+_STEP = {ord("["): 1, ord("{"): 1, ord("]"): -1, ord("}"): -1, ord('"'): 0}
 _SURROGATE_ESCAPE = re.compile(r"\\u[dD][89a-fA-F]")
 
 
 def nesting_depth(text: str) -> int:
-    """How deep arrays and objects nest in ``text``, counted without parsing it."""
-    steps = map(_STEP.__getitem__, _STRING_OR_BRACKET.findall(text))
-    return max(accumulate(steps), default=0)
+    """How deep arrays and objects nest in JSON ``text``, counted without parsing it.
+
+    Escaped backslashes and quotes go first (escapes read left to right in
+    pairs), then every byte but brackets and quotes (no byte of a multi-byte
+    UTF-8 character is one), then whole strings: the brackets outside strings
+    are left.
+    """
+    data = text.encode("utf-8", "surrogatepass").replace(b"\\\\", b"").replace(b'\\"', b"")
+    brackets = _STRING.sub(b"", data.translate(None, _NOT_STRUCTURE))
+    return max(accumulate(map(_STEP.__getitem__, brackets)), default=0)
 
 
 def _refuse_constant(name: str) -> Any:

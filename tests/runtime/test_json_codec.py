@@ -120,20 +120,34 @@ def test_size_limit() -> None:
         loads(b"[1, 2, 3, 4]", limits)  # bytes: counted before decoding
 
 
-def test_depth_limit_is_checked_before_parsing() -> None:
+def test_depth_limit() -> None:
     limits = Limits(max_chars=API_LIMITS.max_chars, max_depth=3)
     assert loads("[[[1]]]", limits) == [[[1]]]
     with pytest.raises(JsonError, match="nested 4 deep, more than the limit of 3"):
         loads('[{"a": [[1]]}]', limits)
-    # Deeper than Python's recursion limit: refused by the count, not by a RecursionError.
-    with pytest.raises(JsonError, match="nested 200000 deep"):
+    # Deeper than Python's recursion limit: refused by the count, never a RecursionError.
+    with pytest.raises(JsonError, match="nested 200000 deep, more than the limit of 32"):
         loads("[" * 200_000 + "]" * 200_000, Limits(max_chars=10**6, max_depth=32))
 
 
+@pytest.mark.parametrize(
+    ("text", "depth"),
+    [
+        ('[[[1]], {"a": [{}]}]', 4),
+        ("7", 0),
+        ('["[[[[", "]]]]"]', 1),
+        ('["\\\\", ["\\"[[["]]', 2),  # an escaped backslash, then an escaped quote
+        ('["\\\\"]', 1),  # an escaped backslash ends the string: the quote after it closes
+        ('"\\u005b[["', 0),
+    ],
+)
+def test_nesting_depth_skips_strings(text: str, depth: int) -> None:
+    assert nesting_depth(text) == depth
+
+
 def test_brackets_inside_strings_do_not_count() -> None:
-    assert nesting_depth('["[[[[", "\\"]]]{{{", {"k": "[["}]') == 2
-    assert nesting_depth('"unterminated [[[[') == 0
-    assert loads(json.dumps(["[" * 40])) == ["[" * 40]
+    limits = Limits(max_chars=100, max_depth=2)
+    assert loads('["[[[[", "\\"]]]{{{", {"k": "[["}]', limits) == ["[[[[", '"]]]{{{', {"k": "[["}]
 
 
 def test_bytes_must_be_utf8() -> None:

@@ -126,7 +126,7 @@ def test_a_malformed_message_is_a_problem_naming_the_field(
     ("text", "detail"),
     [
         ('{"node": ["x"]}', "no 'format'"),
-        ("[" * 100_000 + "]" * 100_000, "nested 100000 deep"),
+        ("[" * 100_000 + "]" * 100_000, "nested 100000 deep, more than the limit of 32"),
         ('{"format": 1, "node": NaN}', "NaN is not JSON"),
         ("not json", "not JSON"),
         ("", "not JSON"),
