@@ -4,11 +4,15 @@ The schema message carries each validator in its schema spelling, so the audit
 rebuilds exactly the checks the node runs (``compile_param``) and the rules it
 evaluates (``compile_rule``), without the schema file. A value equals its
 default as the runtime counts a change: a NaN default holding NaN is no drift.
+
+Any node can publish a schema message, and a custom validator names a function
+to import and call. The audit runs one only from a package it was told to
+trust: otherwise a message naming ``os:system`` would run it on a value.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping
+from collections.abc import Collection, Iterator, Mapping
 from typing import Any
 
 from genparams.audit.findings import DRIFT_DEFAULT, NOT_CHECKED, VIOLATION, Finding
@@ -20,14 +24,30 @@ from genparams.runtime.validators import Custom
 from genparams.runtime.values import same_value
 
 
-def importable(check: Any) -> bool:
-    if not isinstance(check, Custom):
-        return True
+def trusted(check: Custom, packages: Collection[str]) -> bool:
+    """Whether a custom validator's module is in one of ``packages`` (or is one)."""
+    module = check.target.partition(":")[0]
+    return any(module == package or module.startswith(package + ".") for package in packages)
+
+
+def importable(check: Custom) -> bool:
     try:
         check.resolve()
     except Exception:  # any import failure means: cannot run it here
         return False
     return True
+
+
+def not_runnable(check: Any, packages: Collection[str]) -> str | None:
+    """Why the audit does not run a check here, if it does not."""
+    if not isinstance(check, Custom):
+        return None
+    if not trusted(check, packages):
+        package = check.target.partition(":")[0].partition(".")[0]
+        return f"{check.describe()}: not run, package not trusted (--trust-package {package})"
+    if not importable(check):
+        return f"{check.describe()}: not importable"
+    return None
 
 
 def described_parameters(
@@ -43,7 +63,10 @@ def described_parameters(
 
 
 def check_class(
-    node: str, described: Mapping[str, Any], values: Mapping[str, Any]
+    node: str,
+    described: Mapping[str, Any],
+    values: Mapping[str, Any],
+    packages: Collection[str] = (),
 ) -> list[Finding]:
     findings: list[Finding] = []
     typed: dict[str, Any] = {}
@@ -55,13 +78,17 @@ def check_class(
                 Finding(node, VIOLATION, name, "declared in the schema, not on the node")
             )
             continue
-        findings.extend(check_value(node, compiled, values[name], typed))
+        findings.extend(check_value(node, compiled, values[name], typed, packages))
     findings.extend(check_rules(node, described, typed))
     return findings
 
 
 def check_value(
-    node: str, compiled: CompiledParam, raw: Any, typed: dict[str, Any]
+    node: str,
+    compiled: CompiledParam,
+    raw: Any,
+    typed: dict[str, Any],
+    packages: Collection[str] = (),
 ) -> list[Finding]:
     name = compiled.name
     try:
@@ -71,8 +98,9 @@ def check_value(
     typed[name] = value
     found = []
     for check in compiled.checks:
-        if not importable(check):
-            found.append(Finding(node, NOT_CHECKED, name, f"{check.describe()}: not importable"))
+        skipped = not_runnable(check, packages)
+        if skipped is not None:
+            found.append(Finding(node, NOT_CHECKED, name, skipped))
             continue
         reason = check(value)
         if reason is not None:
@@ -107,8 +135,14 @@ def check_rules(node: str, described: Mapping[str, Any], typed: Mapping[str, Any
     return found
 
 
-def check_node(node: str, schema: Mapping[str, Any], values: Mapping[str, Any]) -> list[Finding]:
+def check_node(
+    node: str,
+    schema: Mapping[str, Any],
+    values: Mapping[str, Any],
+    packages: Collection[str] = (),
+) -> list[Finding]:
+    """Findings of a node's values against its schema; custom validators of ``packages`` run."""
     findings = []
     for described in schema.get("classes", []):
-        findings.extend(check_class(node, described, values))
+        findings.extend(check_class(node, described, values, packages))
     return findings

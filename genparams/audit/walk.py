@@ -101,6 +101,7 @@ def audit(
     only: Sequence[str] = (),
     settle: float = 1.0,
     timeout: float = 5.0,
+    trusted_packages: Sequence[str] = (),
 ) -> AuditResult:
     started = time.monotonic()
     result = AuditResult()
@@ -129,7 +130,7 @@ def audit(
         for name, values in read_batch(graph, to_read[start : start + BATCH], timeout, result):
             schema = schemas.get(name)
             if schema is not None:
-                result.findings.extend(check_node(name, schema, values))
+                result.findings.extend(check_node(name, schema, values, trusted_packages))
             result.findings.extend(file_drift(name, documents, values))
     result.seconds = time.monotonic() - started
     return result
