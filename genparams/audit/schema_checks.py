@@ -18,16 +18,10 @@ from typing import Any
 from genparams.audit.findings import DRIFT_DEFAULT, NOT_CHECKED, VIOLATION, Finding
 from genparams.runtime.naming import strip_prefix
 from genparams.runtime.rules import RuleError, compile_rule
-from genparams.runtime.schema_message import param_from_json
+from genparams.runtime.schema_message import param_from_json, trusted
 from genparams.runtime.spec import CompiledParam, compile_param
 from genparams.runtime.validators import Custom
 from genparams.runtime.values import same_value
-
-
-def trusted(check: Custom, packages: Collection[str]) -> bool:
-    """Whether a custom validator's module is in one of ``packages`` (or is one)."""
-    module = check.target.partition(":")[0]
-    return any(module == package or module.startswith(package + ".") for package in packages)
 
 
 def importable(check: Custom) -> bool:

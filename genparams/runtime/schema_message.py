@@ -10,7 +10,7 @@ never as an exception.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 from dataclasses import dataclass
 from typing import Any
 
@@ -18,6 +18,7 @@ from genparams.runtime.json_codec import JsonError, Limits, loads
 from genparams.runtime.schema_topic import FORMAT_VERSION
 from genparams.runtime.spec import ParamSpec, compile_param
 from genparams.runtime.types import TYPES
+from genparams.runtime.validators import Custom
 
 SCHEMA_MESSAGE_LIMITS = Limits(max_chars=16 << 20, max_depth=32)
 """16 MiB is about 40,000 described parameters; format 1 nests 9 deep at most."""
@@ -106,6 +107,16 @@ def param_from_json(described: Mapping[str, Any], name: str) -> ParamSpec:
         choices=None if described["choices"] is None else frozen(described["choices"]),
         validators=tuple((rule, frozen(arg)) for rule, arg in described["validators"]),
     )
+
+
+def trusted(check: Custom, packages: Collection[str]) -> bool:
+    """Whether a custom validator's module is in one of ``packages`` (or is one).
+
+    A message names any function it likes: a tool imports and calls one only
+    from a package its user trusts, never ``os:system`` because a message says so.
+    """
+    module = check.target.partition(":")[0]
+    return any(module == package or module.startswith(package + ".") for package in packages)
 
 
 def _check_parameter(described: dict[str, Any], where: str) -> None:
