@@ -78,7 +78,6 @@ class Received:
 
     message: dict[str, Any] | SchemaProblem
     writers: tuple[tuple[bytes, str | None], ...]  # (endpoint gid, node name if known)
-    time: float
 
 
 def publisher_node(info: Any) -> str | None:
@@ -162,7 +161,7 @@ class Graph:
         except Exception as exc:  # a callback that raises would end the executor's thread
             read, writers = SchemaProblem(f"schema message cannot be read: {exc!r}"), ()
         with self.lock:
-            self.schemas[owner] = Received(read, writers, time.monotonic())
+            self.schemas[owner] = Received(read, writers)
         self.dispatch({"kind": "schema", "node": owner})
 
     def schema_state(self, node_name: str) -> tuple[dict[str, Any] | None, str | None]:
