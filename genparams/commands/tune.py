@@ -26,12 +26,13 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
     parser.add_argument("--port", type=int, default=8765, help="port (default 8765; 0: any)")
     parser.add_argument("--read-only", action="store_true", help="serve a view-only page")
     parser.add_argument(
-        "--trust-validators",
+        "--trust-package",
         action="append",
         default=[],
-        metavar="MODULE",
-        help="run the custom validators of MODULE (and its submodules) in the page's checks; "
-        "others are checked by the node on apply (repeatable)",
+        metavar="PACKAGE",
+        help="run the custom validators of PACKAGE (or module, and its submodules) that schema"
+        " messages name in the page's checks; others are checked by the node on apply"
+        " (repeatable)",
     )
     parser.set_defaults(run=run)
 
@@ -58,7 +59,7 @@ def run(args: argparse.Namespace) -> int:
         args.port,
         nodes=tuple(absolute(n) for n in args.nodes),
         read_only=args.read_only,
-        trusted_validators=tuple(args.trust_validators),
+        trusted_packages=tuple(args.trust_package),
     )
     try:
         print(f"genparams tune: serving {server.start()}", flush=True)

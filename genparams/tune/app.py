@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import asyncio
 import hmac
-import json
 from collections.abc import AsyncIterator
 from pathlib import Path
 from typing import Any
@@ -17,13 +16,15 @@ from typing import Any
 from starlette.applications import Starlette
 from starlette.concurrency import run_in_threadpool
 from starlette.requests import Request
-from starlette.responses import FileResponse, JSONResponse, Response, StreamingResponse
+from starlette.responses import FileResponse, Response, StreamingResponse
 from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 
 from genparams import __version__
+from genparams.runtime.json_codec import API_LIMITS, dumps, loads
 from genparams.tune.checking import Checker, json_parameter
 from genparams.tune.graph import Graph
+from genparams.tune.json_response import JSONResponse
 from genparams.tune.params_dump import params_file_text
 
 STATIC = Path(__file__).resolve().parent / "static"
@@ -40,10 +41,10 @@ class TuneApp:
         token: str | None = None,
         read_only: bool = False,
         nodes: tuple[str, ...] = (),
-        trusted_validators: tuple[str, ...] = (),
+        trusted_packages: tuple[str, ...] = (),
     ) -> None:
         self.graph = graph
-        self.checker = Checker(graph.node, trusted_validators)
+        self.checker = Checker(graph.node, trusted_packages)
         self.token = token
         self.read_only = read_only
         self.only_nodes = nodes
@@ -86,7 +87,10 @@ class TuneApp:
         names = await run_in_threadpool(self.graph.node_names)
         if self.only_nodes:
             names = [n for n in names if n in self.only_nodes]
-        listed = [{"name": n, "genparams": self.graph.schema(n) is not None} for n in names]
+        listed = []
+        for n in names:
+            schema, problem = self.graph.schema_state(n)
+            listed.append({"name": n, "genparams": schema is not None, "schema_problem": problem})
         return JSONResponse({"nodes": listed})
 
     async def node(self, request: Request) -> Response:
@@ -97,8 +101,9 @@ class TuneApp:
             parameters = await run_in_threadpool(self.graph.read_node, name)
         except TimeoutError as exc:
             return JSONResponse({"error": str(exc)}, status_code=504)
+        schema, problem = self.graph.schema_state(name)
         return JSONResponse(
-            {"node": name, "schema": self.graph.schema(name), "parameters": parameters}
+            {"node": name, "schema": schema, "schema_problem": problem, "parameters": parameters}
         )
 
     async def set(self, request: Request) -> Response:
@@ -107,7 +112,7 @@ class TuneApp:
         if self.read_only:
             return JSONResponse({"error": "this page is read-only"}, status_code=403)
         try:
-            body = await request.json()
+            body = loads(await request.body(), API_LIMITS)
             node = str(body["node"])
             parameters = [json_parameter(p["name"], p["type"], p["value"]) for p in body["params"]]
             atomic = bool(body.get("atomic", False))
@@ -124,7 +129,7 @@ class TuneApp:
         if (denied := self.denied(request)) is not None:
             return denied
         try:
-            body = await request.json()
+            body = loads(await request.body(), API_LIMITS)
             node = str(body["node"])
             edits = [(str(p["name"]), p["type"], p["value"]) for p in body["params"]]
         except (ValueError, KeyError, TypeError) as exc:
@@ -177,7 +182,7 @@ class TuneApp:
                     except TimeoutError:
                         yield ": keepalive\n\n"
                         continue
-                    yield f"data: {json.dumps(event)}\n\n"
+                    yield f"data: {dumps(event)}\n\n"
             finally:
                 unsubscribe()
 

@@ -34,7 +34,7 @@ class TuneServer:
         read_only: bool = False,
         token: str | None = None,
         graph: Graph | None = None,
-        trusted_validators: tuple[str, ...] = (),
+        trusted_packages: tuple[str, ...] = (),
     ) -> None:
         if token is None and not is_loopback(host):
             token = secrets.token_urlsafe(24)
@@ -47,7 +47,7 @@ class TuneServer:
             token=token,
             read_only=read_only,
             nodes=nodes,
-            trusted_validators=trusted_validators,
+            trusted_packages=trusted_packages,
         )
         config = uvicorn.Config(
             app.starlette(),

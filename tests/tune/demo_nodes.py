@@ -1,8 +1,9 @@
 """Real nodes for the tuning and audit tests, in a process of their own.
 
 ``python -m tests.tune.demo_nodes NAME:KIND ...`` starts one node per argument
-(KIND: camera, arm, motion, plain, loose, edges, checks, or wideN with N parameters) and prints
-"ready" once every node is declared. ROS arguments for every node follow ``--``.
+(KIND: camera, arm, motion, nonfinite, plain, loose, edges, checks, or wideN with N
+parameters) and prints "ready" once every node is declared. ROS arguments for every node
+follow ``--``.
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ SCHEMAS = {
     "camera": ROOT / "examples/camera_node/camera_driver.yaml",
     "arm": ROOT / "examples/arm/arm.yaml",
     "motion": ROOT / "examples/motion/motion.yaml",
+    "nonfinite": ROOT / "tests/tune/nonfinite.yaml",
 }
 
 

@@ -67,11 +67,12 @@ def test_a_node_with_a_bad_message_is_still_checked_by_its_descriptors(ros: RosH
     assert not unknown["results"][0]["successful"]
 
 
-def test_trusted_modules_are_named_on_the_command_line() -> None:
+def test_trusted_packages_are_named_alike_for_tune_and_audit() -> None:
     from genparams.cli import build_parser
 
-    args = build_parser().parse_args(
-        ["tune", "--trust-validators", "my_robot.checks", "--trust-validators", "other"]
-    )
-    assert args.trust_validators == ["my_robot.checks", "other"]
-    assert build_parser().parse_args(["tune"]).trust_validators == []
+    for command in ("tune", "audit"):
+        args = build_parser().parse_args(
+            [command, "--trust-package", "my_robot.checks", "--trust-package", "other"]
+        )
+        assert args.trust_package == ["my_robot.checks", "other"]
+        assert build_parser().parse_args([command]).trust_package == []

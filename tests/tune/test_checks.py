@@ -41,7 +41,7 @@ def nodes() -> Iterator[None]:
 
 @pytest.fixture(scope="module")
 def server(nodes: None) -> Iterator[TuneServer]:
-    tune = TuneServer(nodes=(EDGES_NODE, CHECKS_NODE, ARM_NODE), trusted_validators=TRUSTED)
+    tune = TuneServer(nodes=(EDGES_NODE, CHECKS_NODE, ARM_NODE), trusted_packages=TRUSTED)
     tune.start()
     tune.graph.wait_for_schemas([EDGES_NODE, CHECKS_NODE, ARM_NODE], timeout=10.0)
     try:

@@ -1,4 +1,6 @@
 // Calls to the tuning server. A token given in the page's URL goes with every call.
+import { parseJson, stringifyJson } from "./json.js";
+
 const token = new URLSearchParams(window.location.search).get("token");
 
 export function withToken(path) {
@@ -11,7 +13,7 @@ async function call(path, options = {}) {
   const headers = { ...(options.headers || {}) };
   if (token) headers["x-genparams-token"] = token;
   const response = await fetch(path, { ...options, headers });
-  const body = await response.json();
+  const body = parseJson(await response.text());
   if (!response.ok) throw new Error(body.error || response.statusText);
   return body;
 }
@@ -24,14 +26,14 @@ export const api = {
     call("/api/set", {
       method: "POST",
       headers: { "content-type": "application/json" },
-      body: JSON.stringify({ node, params, atomic }),
+      body: stringifyJson({ node, params, atomic }),
     }),
   // What the node would answer to setting `params` together, without setting them.
   check: (node, params) =>
     call("/api/check", {
       method: "POST",
       headers: { "content-type": "application/json" },
-      body: JSON.stringify({ node, params }),
+      body: stringifyJson({ node, params }),
     }),
   paramsFileUrl: (name) => withToken(`/api/params-file?node=${encodeURIComponent(name)}`),
   events: () => new EventSource(withToken("/api/events")),
