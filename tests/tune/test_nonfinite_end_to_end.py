@@ -106,6 +106,32 @@ def test_the_page_decodes_the_tags(server: TuneServer) -> None:
             browser.close()
 
 
+def test_the_page_shows_and_takes_nan_and_infinities_by_name(server: TuneServer) -> None:
+    with sync_playwright() as playwright:
+        browser = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
+        try:
+            page = browser.new_page()
+            page.goto(server.url + f"#{NODE}")
+            threshold = page.locator('[data-param="threshold"]')
+            expect(threshold).to_have_value("nan", timeout=10_000)
+            expect(page.locator('[data-param="floor"]')).to_have_value("-inf")
+            expect(page.locator('[data-param="mode"]')).to_have_value("1")
+            threshold.fill("inf")
+            threshold.dispatch_event("change")  # live: applied at once
+            eventually(lambda: values(server)["threshold"] == math.inf)
+            diff = page.locator('[data-diff="threshold"] td')
+            expect(diff).to_have_text(["threshold", "nan", "inf"])  # never null
+            threshold.fill("1e400")  # no double: refused in the page, nothing sent
+            threshold.dispatch_event("change")
+            expect(page.locator('[data-param-error="threshold"]')).to_contain_text("not a number")
+            threshold.fill("NaN")
+            threshold.dispatch_event("change")
+            eventually(lambda: math.isnan(values(server)["threshold"]))
+            expect(page.locator("[data-diff-empty]")).to_be_visible()
+        finally:
+            browser.close()
+
+
 def test_download_then_audit_finds_no_drift(server: TuneServer, tmp_path: Path) -> None:
     params = tmp_path / "nonfinite.yaml"
     params.write_text(get(server, f"/api/params-file?node={NODE}"), encoding="utf-8")
