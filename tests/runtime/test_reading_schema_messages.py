@@ -106,6 +106,11 @@ BAD_EDITS: list[tuple[str, Edit, str]] = [
     ("bad validator argument", set_in_first_param(validators=[["gt", "x"]]), "(ceiling): gt"),
     ("no default", lambda m: m["classes"][0]["parameters"][0].pop("default"), "no 'default'"),
     ("rules as object", lambda m: m["classes"][0].update(rules={}), "rules: expected a list"),
+    (
+        "a parameter outside the prefix",
+        lambda m: m["classes"][0].update(prefix="arm"),
+        "classes[0]: 'ceiling' is not under the class prefix 'arm'",
+    ),
 ]
 
 
