@@ -1,11 +1,25 @@
-"""genparams tune [--host H] [--port N] [--read-only] [NODE...]: tune live nodes in a browser."""
+"""genparams tune [--host H] [--port N] [--token T] [--read-only] [NODE...]: tune live nodes."""
 
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 
 from genparams.paramsfile.ros_yaml import absolute, node_name_problem
+
+TOKEN_VARIABLE = "GENPARAMS_TUNE_TOKEN"
+
+
+def port_number(text: str) -> int:
+    """A TCP port, 0 to 65535 (0: any free port)."""
+    try:
+        port = int(text, 10)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a port number") from None
+    if not 0 <= port <= 65535:
+        raise argparse.ArgumentTypeError(f"{port} is not a port: use 0 to 65535")
+    return port
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -13,13 +27,17 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
         "tune",
         help="serve a web page to tune the parameters of running nodes; prints its URL",
     )
-    parser.add_argument("nodes", nargs="*", metavar="NODE", help="list only these nodes")
     parser.add_argument(
-        "--host",
-        default="127.0.0.1",
-        help="address to bind (default 127.0.0.1); any other needs the token in the URL",
+        "nodes", nargs="*", metavar="NODE", help="serve only these nodes (reads and sets)"
     )
-    parser.add_argument("--port", type=int, default=8765, help="port (default 8765; 0: any)")
+    parser.add_argument("--host", default="127.0.0.1", help="address to bind (default 127.0.0.1)")
+    parser.add_argument(
+        "--port", type=port_number, default=8765, help="port, 0 to 65535 (default 8765; 0: any)"
+    )
+    parser.add_argument(
+        "--token",
+        help=f"the access token (default: ${TOKEN_VARIABLE}, else a new random one per run)",
+    )
     parser.add_argument("--read-only", action="store_true", help="serve a view-only page")
     parser.set_defaults(run=run)
 
@@ -30,13 +48,19 @@ def run(args: argparse.Namespace) -> int:
         if problem is not None:
             print(f"genparams tune: invalid node {node!r}: {problem}", file=sys.stderr)
             return 2
+    from genparams.tune.security import token_problem
     from genparams.tune.server import TuneServer
 
+    token = args.token or os.environ.get(TOKEN_VARIABLE) or None
+    if token is not None and (problem := token_problem(token)) is not None:
+        print(f"genparams tune: invalid token: {problem}", file=sys.stderr)
+        return 2
     server = TuneServer(
         args.host,
         args.port,
         nodes=tuple(absolute(n) for n in args.nodes),
         read_only=args.read_only,
+        token=token,
     )
     try:
         print(f"genparams tune: serving {server.start()}", flush=True)
