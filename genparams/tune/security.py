@@ -21,6 +21,7 @@ import functools
 import hmac
 import ipaddress
 import json
+import logging
 import re
 import socket
 from collections.abc import Iterable
@@ -30,6 +31,7 @@ from urllib.parse import parse_qs
 
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
+LOG = logging.getLogger("genparams.tune")
 TOKEN_HEADER = "x-genparams-token"
 TOKEN_TEXT = re.compile(r"[A-Za-z0-9_.~-]{16,256}")
 TOKEN_RULE = "16 to 256 letters, digits or '_.~-'"
@@ -157,6 +159,16 @@ class Gate:
             if scope["method"] not in SAFE_METHODS or has_body(scope):
                 receive = await self.read_body(scope, receive)
         except RefusedError as refused:
+            # The path only: the page's query string may hold the token.
+            origin = header_map(scope["headers"]).get("origin", "none")
+            LOG.warning(
+                "refused %s %s (Origin %s): %s [%d]",
+                scope["method"],
+                scope["path"],
+                origin,
+                refused.reason,
+                refused.status,
+            )
             await refuse(send, refused)
             return
         if set_cookie is not None:
