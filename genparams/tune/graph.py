@@ -35,6 +35,7 @@ from rclpy.qos import (
     ReliabilityPolicy,
     qos_profile_parameter_events,
 )
+from rclpy.subscription import Subscription
 from std_msgs.msg import String
 
 from genparams.runtime.schema_message import SchemaProblem, read_schema_message
@@ -47,6 +48,7 @@ from genparams.tune.reader import (
     wait_future,
 )
 
+SWEEP_SECONDS = 1.0
 SCHEMA_QOS = QoSProfile(
     depth=1,
     history=HistoryPolicy.KEEP_LAST,
@@ -87,6 +89,9 @@ class Graph:
         self.lock = threading.Lock()
         self.schemas: dict[str, Received] = {}  # node name -> what its schema topic carried
         self.subscribed: set[str] = set()
+        self.schema_subscriptions: dict[str, Subscription] = {}
+        self.absent: set[str] = set()  # nodes the last sweep found gone (see sweep)
+        self.quiet: set[str] = set()  # schema topics it found without a publisher
         self.readers: dict[str, ParameterReader] = {}
         self.setters: dict[str, AsyncParameterClient] = {}
         self.listeners: list[EventListener] = []
@@ -94,6 +99,7 @@ class Graph:
             ParameterEvent, "/parameter_events", self.on_event, qos_profile_parameter_events
         )
         self.node.create_timer(0.25, self.watch_schema_topics)
+        self.node.create_timer(SWEEP_SECONDS, self.sweep)
         self.thread = threading.Thread(target=self.spin, name="genparams-graph", daemon=True)
         self.thread.start()
 
@@ -133,7 +139,34 @@ class Graph:
             def received(message: String, owner: str = owner) -> None:
                 self.on_schema(owner, message)
 
-            self.node.create_subscription(String, topic, received, SCHEMA_QOS)
+            subscription = self.node.create_subscription(String, topic, received, SCHEMA_QOS)
+            with self.lock:
+                self.schema_subscriptions[topic] = subscription
+
+    def sweep(self) -> None:
+        """Let go of what nodes that left the graph held: service clients, schemas, topics.
+
+        A node or topic gone at two sweeps in a row is gone (one sweep could race a
+        client made for a node discovered meanwhile). Without this, every node name
+        ever asked for would keep its clients, and node churn would grow the server.
+        """
+        present = set(self.node_names())
+        with self.lock:
+            held = {*self.readers, *self.setters, *self.schemas}
+            topics = list(self.schema_subscriptions)
+        quiet = {t for t in topics if self.node.count_publishers(t) == 0}
+        gone = {n for n in held if n not in present}
+        gone_nodes, self.absent = gone & self.absent, gone
+        gone_topics, self.quiet = quiet & self.quiet, quiet
+        for topic in gone_topics:
+            with self.lock:
+                subscription = self.schema_subscriptions.pop(topic)
+                self.subscribed.discard(topic)
+            self.node.destroy_subscription(subscription)
+        for name in gone_nodes:
+            self.forget(name)
+            with self.lock:
+                self.schemas.pop(name, None)
 
     def writers(self, node_name: str) -> dict[bytes, str | None]:
         """The publishers on a node's schema topic: endpoint gid -> node name (None: unknown)."""

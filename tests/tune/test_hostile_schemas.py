@@ -13,7 +13,6 @@ import math
 import os
 import subprocess
 import sys
-import urllib.request
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -26,7 +25,14 @@ from genparams.runtime.schema_topic import SCHEMA_TOPIC_SUFFIX, class_text, node
 from genparams.runtime.spec import compile_schema
 from genparams.tune.server import TuneServer
 from tests.support import ROOT, load_generated
-from tests.tune.support import CHROMIUM, CHROMIUM_ARGS, demo_nodes, eventually, unique
+from tests.tune.support import (
+    CHROMIUM,
+    CHROMIUM_ARGS,
+    api_call,
+    demo_nodes,
+    eventually,
+    unique,
+)
 
 CAM, PLAIN = f"/{unique('hostile_cam')}", f"/{unique('hostile_plain')}"
 LISTED, DEEP, FUTURE, FLOAT32, SPOOFER, THIEF = (
@@ -96,11 +102,9 @@ def server(graph_with_hostiles: None) -> Iterator[TuneServer]:
 
 def call(server: TuneServer, path: str, body: Any = None) -> Any:
     """An API call over HTTP; the answer must be strict JSON."""
-    url = server.url.rstrip("/") + path
-    data = None if body is None else json.dumps(body).encode()
-    request = urllib.request.Request(url, data, {"content-type": "application/json"})
-    with urllib.request.urlopen(request, timeout=20) as response:
-        text = response.read().decode("ascii")
+    answer = api_call(server, path, body)
+    assert answer.ok, answer.body
+    text = answer.body.decode("ascii")
     json.loads(text, parse_constant=lambda token: pytest.fail(f"{token} in {path}"))
     return loads(text)
 

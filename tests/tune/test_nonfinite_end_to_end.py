@@ -8,7 +8,6 @@ import math
 import os
 import subprocess
 import sys
-import urllib.request
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -19,7 +18,14 @@ from playwright.sync_api import expect, sync_playwright
 from genparams.runtime.json_codec import loads
 from genparams.tune.server import TuneServer
 from tests.support import ROOT
-from tests.tune.support import CHROMIUM, CHROMIUM_ARGS, demo_nodes, eventually, unique
+from tests.tune.support import (
+    CHROMIUM,
+    CHROMIUM_ARGS,
+    api_call,
+    demo_nodes,
+    eventually,
+    unique,
+)
 
 NODE = f"/{unique('nonfinite')}"
 SCHEMA = ROOT / "tests/tune/nonfinite.yaml"
@@ -43,12 +49,9 @@ def server() -> Iterator[TuneServer]:
 
 
 def get(server: TuneServer, path: str, body: Any = None) -> str:
-    data = None if body is None else json.dumps(body).encode()
-    request = urllib.request.Request(
-        server.url.rstrip("/") + path, data, {"content-type": "application/json"}
-    )
-    with urllib.request.urlopen(request, timeout=20) as response:
-        return str(response.read().decode("utf-8"))
+    answer = api_call(server, path, body)
+    assert answer.ok, answer.body
+    return answer.body.decode("utf-8")
 
 
 def values(server: TuneServer) -> dict[str, Any]:

@@ -317,15 +317,38 @@ async function refreshNodes() {
   }));
 }
 
+// The node named after "#" in the address; a fragment that does not decode names none.
+function nodeInAddress() {
+  try {
+    return decodeURIComponent(window.location.hash.slice(1));
+  } catch {
+    status("the address names no node (its # part does not decode)");
+    return "";
+  }
+}
+
+// Events of the open node. The server drops a stream that falls too far behind; the
+// browser reconnects, and the node is read again for whatever the gap held.
+function listen() {
+  const events = api.events();
+  let opened = 0;
+  events.onopen = () => { if (opened++ && page.node) openNode(page.node); };
+  events.onmessage = (message) => onEvent(parseJson(message.data));
+}
+
 async function main() {
   // The node named in the address loads while the config and the node list are fetched.
-  const wanted = decodeURIComponent(window.location.hash.slice(1));
+  const wanted = nodeInAddress();
   const loading = wanted ? api.node(wanted) : null;
+  loading?.catch(() => {});  // openNode reports it
   const config = await api.config();
   page.readOnly = config.read_only;
   document.getElementById("mode").hidden = !page.readOnly;
-  api.events().onmessage = (message) => onEvent(parseJson(message.data));
-  await Promise.all([refreshNodes(), wanted ? openNode(wanted, loading) : null]);
+  listen();
+  await Promise.all([
+    refreshNodes(),
+    wanted ? openNode(wanted, loading).catch((error) => status(`${wanted}: ${error.message}`)) : null,
+  ]);
   setInterval(refreshNodes, 1000);
   // Milliseconds from navigation to a usable page, after the first paint of the form.
   await new Promise((resolve) => requestAnimationFrame(() => setTimeout(resolve)));
