@@ -10,6 +10,7 @@ Futures; :func:`wait_future` and the web app's bridge turn them into results.
 from __future__ import annotations
 
 import json
+import logging
 import threading
 import time
 from collections.abc import Callable, Iterable, Sequence
@@ -19,7 +20,7 @@ import rclpy
 from rcl_interfaces.msg import ParameterEvent
 from rclpy.client import Client
 from rclpy.context import Context
-from rclpy.executors import MultiThreadedExecutor
+from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor, ShutdownException
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.parameter_client import AsyncParameterClient
@@ -37,11 +38,12 @@ from genparams.runtime.schema_topic import SCHEMA_TOPIC_SUFFIX
 from genparams.tune.reader import (
     TYPE_NAMES,
     ParameterReader,
+    answers,
     python_value,
     read_all,
-    wait_future,
 )
 
+LOG = logging.getLogger("genparams.tune")
 SWEEP_SECONDS = 1.0
 SCHEMA_QOS = QoSProfile(
     depth=1,
@@ -93,10 +95,20 @@ class Graph:
         self.thread.start()
 
     def spin(self) -> None:
-        try:
-            self.executor.spin()
-        except Exception:  # shutdown while spinning ends the thread quietly
-            pass
+        """Spin until :meth:`close`; a callback's error is logged and spinning goes on.
+
+        One bad message or a race inside rclpy must not end the thread that answers
+        every page and audit.
+        """
+        while self.context.ok():
+            try:
+                self.executor.spin()
+            except (ExternalShutdownException, ShutdownException):
+                return
+            except Exception:
+                if not self.context.ok():
+                    return  # shutdown while spinning ends the thread quietly
+                LOG.exception("genparams tune: the ROS executor went on after an error")
 
     def close(self) -> None:
         self.executor.shutdown(timeout_sec=1.0)
@@ -235,10 +247,10 @@ class Graph:
                     raise TimeoutError(f"{node_name}: parameter services did not appear")
                 time.sleep(0.005)
         if atomic:
-            result = wait_future(client.set_parameters_atomically(parameters), timeout).result
-            results = [result] * len(parameters)
+            sent = answers([lambda: client.set_parameters_atomically(parameters)], timeout)
+            results = [sent[0].result] * len(parameters)
         else:
-            results = wait_future(client.set_parameters(parameters), timeout).results
+            results = answers([lambda: client.set_parameters(parameters)], timeout)[0].results
         return [
             {"name": p.name, "successful": r.successful, "reason": r.reason}
             for p, r in zip(parameters, results, strict=True)
