@@ -14,6 +14,7 @@ place of its schema, and the rest of the graph is unaffected.
 
 from __future__ import annotations
 
+import logging
 import threading
 import time
 from collections.abc import Callable, Iterable, Sequence
@@ -24,7 +25,7 @@ import rclpy
 from rcl_interfaces.msg import ParameterEvent
 from rclpy.client import Client
 from rclpy.context import Context
-from rclpy.executors import MultiThreadedExecutor
+from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor, ShutdownException
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.parameter_client import AsyncParameterClient
@@ -42,12 +43,13 @@ from genparams.runtime.schema_message import SchemaProblem, read_schema_message
 from genparams.runtime.schema_topic import SCHEMA_TOPIC_SUFFIX
 from genparams.tune.reader import (
     ParameterReader,
+    answers,
     python_value,
     read_all,
     read_named,
-    wait_future,
 )
 
+LOG = logging.getLogger("genparams.tune")
 SWEEP_SECONDS = 1.0
 SCHEMA_QOS = QoSProfile(
     depth=1,
@@ -104,10 +106,20 @@ class Graph:
         self.thread.start()
 
     def spin(self) -> None:
-        try:
-            self.executor.spin()
-        except Exception:  # shutdown while spinning ends the thread quietly
-            pass
+        """Spin until :meth:`close`; a callback's error is logged and spinning goes on.
+
+        One bad message or a race inside rclpy must not end the thread that answers
+        every page and audit.
+        """
+        while self.context.ok():
+            try:
+                self.executor.spin()
+            except (ExternalShutdownException, ShutdownException):
+                return
+            except Exception:
+                if not self.context.ok():
+                    return  # shutdown while spinning ends the thread quietly
+                LOG.exception("genparams tune: the ROS executor went on after an error")
 
     def close(self) -> None:
         self.executor.shutdown(timeout_sec=1.0)
@@ -287,10 +299,10 @@ class Graph:
                     raise TimeoutError(f"{node_name}: parameter services did not appear")
                 time.sleep(0.005)
         if atomic:
-            result = wait_future(client.set_parameters_atomically(parameters), timeout).result
-            results = [result] * len(parameters)
+            sent = answers([lambda: client.set_parameters_atomically(parameters)], timeout)
+            results = [sent[0].result] * len(parameters)
         else:
-            results = wait_future(client.set_parameters(parameters), timeout).results
+            results = answers([lambda: client.set_parameters(parameters)], timeout)[0].results
         return [
             {"name": p.name, "successful": r.successful, "reason": r.reason}
             for p, r in zip(parameters, results, strict=True)
