@@ -285,13 +285,18 @@ class ProposalCheck:
         return param.type.from_ros(read["value"])
 
 
+MAX_COMPILED = 64
+"""Nodes whose compiled messages are kept: nodes come and go, the server stays flat."""
+
+
 class Checker:
     """The tuning server's checks: each node's schema message compiled once, on demand."""
 
     def __init__(self, node: Node, trusted_packages: Sequence[str] = ()) -> None:
         self.node = node
         self.trusted = tuple(trusted_packages)
-        # node name -> (the message compiled, its classes or why it could not be)
+        # node name -> (the message compiled, its classes or why it could not be); the
+        # least recently compiled go first past MAX_COMPILED nodes.
         self.compiled: dict[str, tuple[object, tuple[ClassChecks, ...] | str]] = {}
 
     def classes(
@@ -305,6 +310,9 @@ class Checker:
                 found: tuple[ClassChecks, ...] | str = compile_message(message, self.trusted)
             except SchemaMessageError as exc:
                 found = f"its schema message cannot be checked here: {exc}"
+            self.compiled.pop(node_name, None)
+            while len(self.compiled) >= MAX_COMPILED:
+                del self.compiled[next(iter(self.compiled))]
             cached = self.compiled[node_name] = (message, found)
         found = cached[1]
         return ((), found) if isinstance(found, str) else (found, None)

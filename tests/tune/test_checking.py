@@ -6,7 +6,13 @@ from typing import Any
 
 import pytest
 
-from genparams.tune.checking import CheckedByNode, Checker, SchemaMessageError, compile_message
+from genparams.tune.checking import (
+    MAX_COMPILED,
+    CheckedByNode,
+    Checker,
+    SchemaMessageError,
+    compile_message,
+)
 from tests.support import RosHarness
 
 
@@ -76,3 +82,13 @@ def test_trusted_packages_are_named_alike_for_tune_and_audit() -> None:
         )
         assert args.trust_package == ["my_robot.checks", "other"]
         assert build_parser().parse_args([command]).trust_package == []
+
+
+def test_compiled_messages_of_nodes_that_come_and_go_stay_bounded(ros: RosHarness) -> None:
+    checker = Checker(ros.node())
+    for index in range(3 * MAX_COMPILED):
+        classes, problem = checker.classes(f"/churn_{index}", message(param("x")))
+        assert problem is None and classes[0].param("x") is not None
+    assert len(checker.compiled) == MAX_COMPILED
+    last = f"/churn_{3 * MAX_COMPILED - 1}"
+    assert "/churn_0" not in checker.compiled and last in checker.compiled
