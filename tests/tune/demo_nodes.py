@@ -1,12 +1,13 @@
 """Real nodes for the tuning and audit tests, in a process of their own.
 
 ``python -m tests.tune.demo_nodes NAME:KIND ...`` starts one node per argument
-(KIND: camera, arm, motion, plain, loose, or wideN with N parameters) and prints
+(KIND: camera, arm, motion, plain, loose, hostile, or wideN with N parameters) and prints
 "ready" once every node is declared. ROS arguments for every node follow ``--``.
 """
 
 from __future__ import annotations
 
+import json
 import sys
 import tempfile
 from pathlib import Path
@@ -39,8 +40,24 @@ def wide_schema(count: int) -> str:
     return "\n".join(lines) + "\n"
 
 
+# Markup and script in every text a schema lets a node publish: the page shows it as text.
+HOSTILE_TEXT = '<img src=x onerror="window.pwned=1"><script>window.pwned=2</script>'
+
+
+def hostile_schema() -> str:
+    text = json.dumps(HOSTILE_TEXT)  # a JSON string is a double-quoted YAML scalar
+    return (
+        f"genparams: 1\nname: hostile\ndescription: {text}\nparameters:\n"
+        f"  mode: {{type: string, default: ok, description: {text}, unit: {text},"
+        f" choices: [ok, {text}]}}\n"
+        f"  gain: {{type: double, default: 1.0, description: {text}, unit: {text}}}\n"
+    )
+
+
 def params_class(kind: str, workdir: Path) -> type:
-    if kind.startswith("wide"):
+    if kind == "hostile":
+        text = genparams.generate(workdir / "hostile.yaml", hostile_schema())
+    elif kind.startswith("wide"):
         text = genparams.generate(workdir / "wide.yaml", wide_schema(int(kind[4:] or 1000)))
     else:
         text = genparams.generate(SCHEMAS[kind])
