@@ -145,7 +145,7 @@ def refusals(caplog: pytest.LogCaptureFixture, origin: str) -> list[str]:
     return [
         r.getMessage()
         for r in caplog.records
-        if r.name == "genparams.tune" and f"/api/set (Origin {origin})" in r.getMessage()
+        if r.name == "genparams.tune" and f"'/api/set' (Origin '{origin}')" in r.getMessage()
     ]
 
 
