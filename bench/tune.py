@@ -104,9 +104,12 @@ def page_numbers(node: str) -> tuple[list[tuple[float, float]], list[float], lis
                 server.graph.set_parameters(
                     node, [json_parameter("group_0.p_0", "double", value)], atomic=False
                 )
-                page.wait_for_function(
-                    f"document.querySelector('{selector}').value === '{value:g}'", polling=5
-                )
+                # Polled from here: the page's CSP forbids the eval that wait_for_function needs.
+                shown = f"document.querySelector('{selector}').value"
+                deadline = started + 10.0
+                while page.evaluate(shown) != f"{value:g}":
+                    if time.perf_counter() > deadline:
+                        raise TimeoutError(f"the page never showed {value:g}")
                 updates.append(time.perf_counter() - started)
             browser.close()
         checks = check_numbers(url, node)

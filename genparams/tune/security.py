@@ -162,10 +162,11 @@ class Gate:
             if scope["method"] not in SAFE_METHODS or has_body(scope):
                 receive = await self.read_body(scope, receive)
         except RefusedError as refused:
-            # The path only: the page's query string may hold the token.
-            origin = header_map(scope["headers"]).get("origin", "none")
+            # The path only: the page's query string may hold the token. Quoted with
+            # repr: what a client sends must not reach a terminal raw.
+            origin = header_map(scope["headers"]).get("origin")
             LOG.warning(
-                "refused %s %s (Origin %s): %s [%d]",
+                "refused %s %r (Origin %r): %s [%d]",
                 scope["method"],
                 scope["path"],
                 origin,

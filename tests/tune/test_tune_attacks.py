@@ -20,6 +20,7 @@ from playwright.sync_api import Browser, BrowserContext, expect, sync_playwright
 
 from genparams.tune.server import TuneServer
 from tests.support import RosHarness, ServiceClient
+from tests.tune.demo_nodes import HOSTILE_TEXT
 from tests.tune.support import CHROMIUM, CHROMIUM_ARGS, demo_nodes, eventually, unique
 
 VICTIM = f"/{unique('attacked')}"
@@ -144,7 +145,7 @@ def refusals(caplog: pytest.LogCaptureFixture, origin: str) -> list[str]:
     return [
         r.getMessage()
         for r in caplog.records
-        if r.name == "genparams.tune" and f"/api/set (Origin {origin})" in r.getMessage()
+        if r.name == "genparams.tune" and f"'/api/set' (Origin '{origin}')" in r.getMessage()
     ]
 
 
@@ -225,3 +226,18 @@ def test_the_page_works_under_its_policy_and_survives_a_bad_fragment(
         expect(framed.frame_locator("iframe").locator("#nodes")).to_have_count(0)
     finally:
         context.close()
+
+
+def test_hostile_published_text_stays_text(context: BrowserContext, server: TuneServer) -> None:
+    name = unique("hostile")
+    with demo_nodes(f"{name}:hostile"):
+        eventually(lambda: f"/{name}" in server.graph.node_names(), timeout=30)
+        page = context.new_page()
+        page.goto(f"{server.url}#/{name}")
+        form = page.locator(f'form[data-node="/{name}"]')
+        expect(form).to_be_visible(timeout=15_000)
+        expect(form.get_by_text(HOSTILE_TEXT).first).to_be_visible()
+        assert form.locator("img, script").count() == 0
+        options = form.locator('[data-param="mode"] option').all_text_contents()
+        assert options == ["ok", HOSTILE_TEXT]
+        assert page.evaluate("window.pwned") is None

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import http.client
 import json
+import logging
 import subprocess
 import sys
 import threading
@@ -417,3 +418,22 @@ def test_the_token_is_printed_once_and_never_logged(tmp_path: object) -> None:
         process.terminate()
         out, err = process.communicate(timeout=20)
     assert token not in out + err
+
+
+def test_refusals_are_logged_escaped_and_without_the_query(
+    server: TuneServer, caplog: pytest.LogCaptureFixture
+) -> None:
+    with caplog.at_level(logging.WARNING, logger="genparams.tune"):
+        host = {"Host": "evil\x1b[31m.test"}
+        assert (
+            http_call(server.port, "GET", f"/api/nodes?token={TOKEN}", headers=host).status == 403
+        )
+        origin = {"Origin": "http://evil\x1b]0;title\x07.test"}
+        assert (
+            http_call(server.port, "GET", "/api/nodes", token=TOKEN, headers=origin).status == 403
+        )
+    lines = [r.getMessage() for r in caplog.records if r.name == "genparams.tune"]
+    assert len(lines) == 2
+    assert all("\x1b" not in line and "\x07" not in line for line in lines)
+    assert all(TOKEN not in line for line in lines)
+    assert "\\x1b" in lines[0] and "'/api/nodes'" in lines[0]
