@@ -7,7 +7,7 @@ PYTHON := $(VENV)/bin/python
 EXAMPLE := examples/camera_node
 
 
-.PHONY: venv lock test-latest browser demo import-node-demo demo-arm tour test check lint typecheck golden screenshots docs bench bench-targets bench-quick bench-profile mutate mutate-sample clean
+.PHONY: venv lock test-latest browser demo import-node-demo demo-arm tour test check lint typecheck golden screenshots docs bench bench-targets bench-quick bench-profile soak mutate mutate-sample clean
 
 # The development environment installs from requirements/dev.lock (every pin with its
 # hashes, from PyPI only); uv itself comes from requirements/uv.lock. genparams goes in
@@ -80,6 +80,11 @@ lint: venv
 typecheck: venv
 	$(PYTHON) -m mypy genparams bench tests
 	cd $(EXAMPLE) && ../../$(PYTHON) -m mypy --config-file ../../pyproject.toml camera_node demo.py
+
+## The tuning server under page loads, node churn and events: memory and fds stay flat.
+## SCALE=10 runs ten times the default (which takes about a minute).
+soak: venv
+	GENPARAMS_SOAK_SCALE=$(or $(SCALE),1) $(PYTHON) -m pytest -s -q tests/tune/test_tune_soak.py
 
 ## Rewrite the golden files (generated modules, bad-schema errors, docs, check-params reports) after an intended change of output.
 golden: venv

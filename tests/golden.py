@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import contextlib
 import io
-import json
 import os
 from collections.abc import Iterator
 from dataclasses import dataclass
@@ -25,6 +24,7 @@ from genparams.outputs.docs_model import docs_page
 from genparams.outputs.json_schema import params_file_schema
 from genparams.outputs.params_file import default_params_file
 from genparams.outputs.render import render_docs, render_params_file
+from genparams.runtime.json_codec import dumps
 
 TESTS = Path(__file__).resolve().parent
 ROOT = TESTS.parent
@@ -96,7 +96,7 @@ def outputs(case: OutputCase) -> dict[str, str]:
         "markdown": render_docs(page, "markdown"),
         "rst": render_docs(page, "rst"),
         "defaults": render_params_file(default_params_file(schema)),
-        "json-schema": json.dumps(params_file_schema(schema), indent=2, ensure_ascii=False) + "\n",
+        "json-schema": dumps(params_file_schema(schema), indent=2, ensure_ascii=False) + "\n",
     }
 
 

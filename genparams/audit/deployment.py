@@ -9,6 +9,7 @@ from typing import Any
 from genparams.audit.findings import DRIFT_FILE, Finding
 from genparams.paramsfile.params_reader import ParamsDocument, read_params_file
 from genparams.paramsfile.ros_yaml import node_matches
+from genparams.runtime.values import same_value as runtime_same_value
 from genparams.schema.errors import SchemaError
 from genparams.schema.input_file import read_input_file
 
@@ -45,11 +46,12 @@ def expected_values(documents: Sequence[ParamsDocument], node: str) -> dict[str,
 
 
 def same_value(wanted: Any, actual: Any) -> bool:
+    """The runtime's equality (NaN equals NaN); a file's ``true`` is not ``1``."""
     if isinstance(wanted, list | tuple) and isinstance(actual, list | tuple):
         return len(wanted) == len(actual) and all(map(same_value, wanted, actual))
     if isinstance(wanted, bool) or isinstance(actual, bool):
         return wanted is actual
-    return bool(wanted == actual)
+    return runtime_same_value(wanted, actual)
 
 
 def file_drift(

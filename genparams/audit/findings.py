@@ -10,6 +10,7 @@ DRIFT_DEFAULT = "drift-from-default"
 DRIFT_FILE = "drift-from-file"
 NO_SCHEMA = "no-schema"
 UNREACHABLE = "unreachable"  # published a schema but its services did not answer: exit 1
+BAD_SCHEMA = "bad-schema"  # a schema message that cannot be read, or not the node's own: exit 1
 NOT_CHECKED = "not-checked"  # a custom validator that cannot be imported here
 
 
@@ -24,7 +25,7 @@ class Finding:
 
     @property
     def failing(self) -> bool:
-        return self.kind in (VIOLATION, UNREACHABLE)
+        return self.kind in (VIOLATION, UNREACHABLE, BAD_SCHEMA)
 
     def text(self) -> str:
         where = f"{self.node}: {self.parameter}" if self.parameter else self.node

@@ -2,9 +2,8 @@
 
 from __future__ import annotations
 
-import json
-
 from genparams.audit.walk import AuditResult
+from genparams.runtime.json_codec import dumps
 
 
 def text_report(result: AuditResult) -> str:
@@ -26,4 +25,4 @@ def json_report(result: AuditResult) -> str:
         "seconds": round(result.seconds, 3),
         "findings": [finding.as_json() for finding in result.findings],
     }
-    return json.dumps(document, indent=2, sort_keys=True, default=list) + "\n"
+    return dumps(document, indent=2, sort_keys=True) + "\n"

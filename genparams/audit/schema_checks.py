@@ -2,30 +2,34 @@
 
 The schema message carries each validator in its schema spelling, so the audit
 rebuilds exactly the checks the node runs (``compile_param``) and the rules it
-evaluates (``compile_rule``), without the schema file.
+evaluates (``compile_rule``), without the schema file. A value equals its
+default as the runtime counts a change: a NaN default holding NaN is no drift.
+
+Any node can publish a schema message, and a custom validator names a function
+to import and call. The audit runs one only from a package it was told to
+trust: otherwise a message naming ``os:system`` would run it on a value.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping
+from collections.abc import Collection, Iterator, Mapping
 from typing import Any
 
 from genparams.audit.findings import DRIFT_DEFAULT, NOT_CHECKED, VIOLATION, Finding
 from genparams.runtime.naming import strip_prefix
-from genparams.runtime.published_spec import param_from_json
 from genparams.runtime.rules import RuleError, compile_rule
+from genparams.runtime.schema_message import param_from_json, why_not_run
 from genparams.runtime.spec import CompiledParam, compile_param
 from genparams.runtime.validators import Custom
+from genparams.runtime.values import same_value
 
 
-def importable(check: Any) -> bool:
+def not_runnable(check: Any, packages: Collection[str]) -> str | None:
+    """Why the audit does not run a check here, if it does not."""
     if not isinstance(check, Custom):
-        return True
-    try:
-        check.resolve()
-    except Exception:  # any import failure means: cannot run it here
-        return False
-    return True
+        return None
+    why = why_not_run(check, packages)
+    return None if why is None else f"{check.describe()}: not run, {why}"
 
 
 def described_parameters(
@@ -41,7 +45,10 @@ def described_parameters(
 
 
 def check_class(
-    node: str, described: Mapping[str, Any], values: Mapping[str, Any]
+    node: str,
+    described: Mapping[str, Any],
+    values: Mapping[str, Any],
+    packages: Collection[str] = (),
 ) -> list[Finding]:
     findings: list[Finding] = []
     typed: dict[str, Any] = {}
@@ -57,13 +64,17 @@ def check_class(
                 Finding(node, VIOLATION, name, "declared in the schema, not on the node")
             )
             continue
-        findings.extend(check_value(node, compiled, values[name], typed))
+        findings.extend(check_value(node, compiled, values[name], typed, packages))
     findings.extend(check_rules(node, described, typed))
     return findings
 
 
 def check_value(
-    node: str, compiled: CompiledParam, raw: Any, typed: dict[str, Any]
+    node: str,
+    compiled: CompiledParam,
+    raw: Any,
+    typed: dict[str, Any],
+    packages: Collection[str] = (),
 ) -> list[Finding]:
     name = compiled.name
     spec = compiled.spec
@@ -76,13 +87,14 @@ def check_value(
         return []
     found = []
     for check in compiled.checks:
-        if not importable(check):
-            found.append(Finding(node, NOT_CHECKED, name, f"{check.describe()}: not importable"))
+        skipped = not_runnable(check, packages)
+        if skipped is not None:
+            found.append(Finding(node, NOT_CHECKED, name, skipped))
             continue
         reason = check(value)
         if reason is not None:
             found.append(Finding(node, VIOLATION, name, reason, check.describe(), raw))
-    if not spec.required and not spec.optional and value != spec.default:
+    if not spec.required and not spec.optional and not same_value(value, spec.default):
         found.append(
             Finding(node, DRIFT_DEFAULT, name, "differs from the schema default", spec.default, raw)
         )
@@ -111,8 +123,14 @@ def check_rules(node: str, described: Mapping[str, Any], typed: Mapping[str, Any
     return found
 
 
-def check_node(node: str, schema: Mapping[str, Any], values: Mapping[str, Any]) -> list[Finding]:
+def check_node(
+    node: str,
+    schema: Mapping[str, Any],
+    values: Mapping[str, Any],
+    packages: Collection[str] = (),
+) -> list[Finding]:
+    """Findings of a node's values against its schema; custom validators of ``packages`` run."""
     findings = []
     for described in schema.get("classes", []):
-        findings.extend(check_class(node, described, values))
+        findings.extend(check_class(node, described, values, packages))
     return findings

@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from genparams.audit.deployment import file_drift
-from genparams.audit.findings import NO_SCHEMA, UNREACHABLE, Finding
+from genparams.audit.findings import BAD_SCHEMA, NO_SCHEMA, UNREACHABLE, Finding
 from genparams.audit.schema_checks import check_node
 from genparams.paramsfile.params_reader import ParamsDocument
 from genparams.runtime.schema_topic import SCHEMA_TOPIC_SUFFIX
@@ -101,6 +101,7 @@ def audit(
     only: Sequence[str] = (),
     settle: float = 1.0,
     timeout: float = 5.0,
+    trusted_packages: Sequence[str] = (),
 ) -> AuditResult:
     started = time.monotonic()
     result = AuditResult()
@@ -111,20 +112,25 @@ def audit(
     graph.watch_schema_topics()
     graph.wait_for_schemas(publishers, timeout)
     to_read = []
+    schemas: dict[str, dict[str, Any]] = {}
     for name in names:
-        schema = graph.schema(name) if name in publishers else None
-        if schema is None:
+        schema, problem = graph.schema_state(name) if name in publishers else (None, None)
+        if problem is not None:
+            result.audited.append(name)
+            result.findings.append(Finding(name, BAD_SCHEMA, "", problem))
+        elif schema is None:
             result.plain.append(name)
             result.findings.append(Finding(name, NO_SCHEMA, "", "publishes no genparams schema"))
         else:
             result.audited.append(name)
+            schemas[name] = schema
         if schema is not None or documents:
             to_read.append(name)
     for start in range(0, len(to_read), BATCH):
         for name, values in read_batch(graph, to_read[start : start + BATCH], timeout, result):
-            schema = graph.schema(name) if name in result.audited else None
+            schema = schemas.get(name)
             if schema is not None:
-                result.findings.extend(check_node(name, schema, values))
+                result.findings.extend(check_node(name, schema, values, trusted_packages))
             result.findings.extend(file_drift(name, documents, values))
     result.seconds = time.monotonic() - started
     return result

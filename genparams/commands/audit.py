@@ -23,6 +23,14 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
         metavar="FILE",
         help="a deployment params file to compare against (repeatable; later files win)",
     )
+    parser.add_argument(
+        "--trust-package",
+        action="append",
+        default=[],
+        metavar="PACKAGE",
+        help="run the custom validators of PACKAGE (or module, and its submodules) that schema"
+        " messages name; others are reported not-checked (repeatable)",
+    )
     parser.add_argument("--format", choices=("text", "json"), default="text")
     parser.add_argument(
         "--settle",
@@ -60,7 +68,14 @@ def run(args: argparse.Namespace) -> int:
     graph = Graph("genparams_audit")
     try:
         only = tuple(absolute(n) for n in args.nodes)
-        result = audit(graph, documents, only=only, settle=args.settle, timeout=args.timeout)
+        result = audit(
+            graph,
+            documents,
+            only=only,
+            settle=args.settle,
+            timeout=args.timeout,
+            trusted_packages=tuple(args.trust_package),
+        )
     finally:
         graph.close()
     sys.stdout.write(json_report(result) if args.format == "json" else text_report(result))

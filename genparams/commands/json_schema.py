@@ -3,12 +3,12 @@
 from __future__ import annotations
 
 import argparse
-import json
 from pathlib import Path
 
 from genparams.commands._common import emit
 from genparams.commands._schemas import add_schema_arguments, bound_spec, load_bounds
 from genparams.outputs.json_schema import params_file_schema
+from genparams.runtime.json_codec import dumps
 from genparams.schema.combine import combined_schema
 
 
@@ -33,5 +33,5 @@ def run(args: argparse.Namespace) -> int:
         return 2
     schema = combined_schema([(b.schema, b.prefix) for b in bounds])
     document = params_file_schema(schema, partial=args.partial)
-    emit(json.dumps(document, indent=2, ensure_ascii=False) + "\n", args.output)
+    emit(dumps(document, indent=2, ensure_ascii=False) + "\n", args.output)
     return 0

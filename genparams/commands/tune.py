@@ -1,8 +1,9 @@
-"""genparams tune [--host H] [--port N] [--read-only] [NODE...]: tune live nodes in a browser."""
+"""genparams tune [--host H] [--port N] [--token T] [--read-only] [--trust-package P] [NODE...]."""
 
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 
 from genparams.paramsfile.ros_yaml import absolute, node_name_problem
@@ -10,6 +11,18 @@ from genparams.paramsfile.ros_yaml import absolute, node_name_problem
 # The page's web stack comes with the tune extra; a plain `pip install genparams` leaves it out.
 WEB_STACK = ("starlette", "uvicorn")
 INSTALL_HINT = "pip install 'genparams[tune]'"
+TOKEN_VARIABLE = "GENPARAMS_TUNE_TOKEN"
+
+
+def port_number(text: str) -> int:
+    """A TCP port, 0 to 65535 (0: any free port)."""
+    try:
+        port = int(text, 10)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a port number") from None
+    if not 0 <= port <= 65535:
+        raise argparse.ArgumentTypeError(f"{port} is not a port: use 0 to 65535")
+    return port
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -17,21 +30,26 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
         "tune",
         help="serve a web page to tune the parameters of running nodes; prints its URL",
     )
-    parser.add_argument("nodes", nargs="*", metavar="NODE", help="list only these nodes")
     parser.add_argument(
-        "--host",
-        default="127.0.0.1",
-        help="address to bind (default 127.0.0.1); any other needs the token in the URL",
+        "nodes", nargs="*", metavar="NODE", help="serve only these nodes (reads and sets)"
     )
-    parser.add_argument("--port", type=int, default=8765, help="port (default 8765; 0: any)")
+    parser.add_argument("--host", default="127.0.0.1", help="address to bind (default 127.0.0.1)")
+    parser.add_argument(
+        "--port", type=port_number, default=8765, help="port, 0 to 65535 (default 8765; 0: any)"
+    )
+    parser.add_argument(
+        "--token",
+        help=f"the access token (default: ${TOKEN_VARIABLE}, else a new random one per run)",
+    )
     parser.add_argument("--read-only", action="store_true", help="serve a view-only page")
     parser.add_argument(
-        "--trust-validators",
+        "--trust-package",
         action="append",
         default=[],
-        metavar="MODULE",
-        help="run the custom validators of MODULE (and its submodules) in the page's checks; "
-        "others are checked by the node on apply (repeatable)",
+        metavar="PACKAGE",
+        help="run the custom validators of PACKAGE (or module, and its submodules) that schema"
+        " messages name in the page's checks; others are checked by the node on apply"
+        " (repeatable)",
     )
     parser.set_defaults(run=run)
 
@@ -53,12 +71,19 @@ def run(args: argparse.Namespace) -> int:
         if problem is not None:
             print(f"genparams tune: invalid node {node!r}: {problem}", file=sys.stderr)
             return 2
+    from genparams.tune.security import token_problem
+
+    token = args.token or os.environ.get(TOKEN_VARIABLE) or None
+    if token is not None and (problem := token_problem(token)) is not None:
+        print(f"genparams tune: invalid token: {problem}", file=sys.stderr)
+        return 2
     server = TuneServer(
         args.host,
         args.port,
         nodes=tuple(absolute(n) for n in args.nodes),
         read_only=args.read_only,
-        trusted_validators=tuple(args.trust_validators),
+        token=token,
+        trusted_packages=tuple(args.trust_package),
     )
     try:
         print(f"genparams tune: serving {server.start()}", flush=True)

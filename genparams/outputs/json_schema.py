@@ -355,8 +355,8 @@ _KEYWORD_BUILDERS: dict[type, Callable[[Any, bool], Keywords]] = {
     RosRange: _range,
     Bounds: lambda c, s: _each(c, [("minimum", c.low), ("maximum", c.high)]),
     Compare: _compare,
-    OneOf: lambda c, s: [("enum", list(c.choices))],
-    SubsetOf: lambda c, s: [("items", {"enum": list(c.choices)})],
+    OneOf: lambda c, s: _enum(c.choices),
+    SubsetOf: lambda c, s: [("items", dict(_enum(c.choices)))],
     NotEmpty: lambda c, s: [("minLength" if s else "minItems", 1)],
     Unique: lambda c, s: [("uniqueItems", True)],
     Length: _length,
@@ -365,17 +365,31 @@ _KEYWORD_BUILDERS: dict[type, Callable[[Any, bool], Keywords]] = {
 }
 
 
+def _non_finite(value: Any) -> bool:
+    return isinstance(value, float) and not math.isfinite(value)
+
+
+def _enum(choices: Any) -> Keywords:
+    """JSON has no NaN or infinity: choices holding one are left unchecked, never narrowed."""
+    if any(_non_finite(choice) for choice in choices):
+        return []
+    return [("enum", list(choices))]
+
+
 def _add(target: dict[str, Any], keyword: str, value: Any) -> None:
     """Add one keyword, merging with what is there; what cannot merge goes to allOf."""
-    if keyword not in target:
+    if (keyword in _LOWER or keyword in _UPPER) and _non_finite(value):
+        return  # JSON has no infinity: an infinite bound is no bound
+    if keyword == "items":
+        items = target.setdefault("items", {})
+        for key, item in value.items():
+            _add(items, key, item)
+    elif keyword not in target:
         target[keyword] = value
     elif keyword in _LOWER:
         target[keyword] = max(target[keyword], value)
     elif keyword in _UPPER:
         target[keyword] = min(target[keyword], value)
-    elif keyword == "items":
-        for key, item in value.items():
-            _add(target["items"], key, item)
     elif keyword == "enum":
         target[keyword] = [v for v in target[keyword] if v in value]
     elif target[keyword] != value:

@@ -8,13 +8,14 @@ class, or the same class under another prefix, republishes the merged message.
 The description is built from the runtime's compiled specs, never from the
 compiler: what is published is exactly what the node enforces. Validators and
 rules appear twice, in words (for people) and as their schema spelling (so a
-client can rebuild the same checks).
+client can rebuild the same checks). The text is written by the JSON codec
+(:mod:`~genparams.runtime.json_codec`): a NaN or infinite default or bound
+travels as ``{"$float": "nan"}``, never as a token a strict reader refuses.
 """
 
 from __future__ import annotations
 
 import hashlib
-import json
 import threading
 import weakref
 from collections.abc import Mapping
@@ -22,6 +23,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from genparams import __version__
+from genparams.runtime.json_codec import dumps
 from genparams.runtime.naming import ENTRY_KEY, join_prefix
 from genparams.runtime.spec import CompiledParam, CompiledSchema
 
@@ -116,7 +118,7 @@ def describe_class(compiled: CompiledSchema, prefix: str) -> dict[str, Any]:
 
 def schema_hash(body: Mapping[str, Any]) -> str:
     """A stable digest of a description: equal schemas under equal prefixes hash equal."""
-    return text_hash(json.dumps(body, sort_keys=True, separators=(",", ":"), default=str))
+    return text_hash(dumps(body, sort_keys=True, separators=(",", ":")))
 
 
 def text_hash(text: str) -> str:
@@ -142,7 +144,7 @@ def class_text(compiled: CompiledSchema, prefix: str) -> ClassText:
     cached = _CLASS_TEXTS.get(key)
     if cached is None or cached[0] is not compiled:
         body = describe_class(compiled, prefix)
-        cached = (compiled, ClassText(json.dumps(body, sort_keys=True), body["hash"]))
+        cached = (compiled, ClassText(dumps(body, sort_keys=True), body["hash"]))
         _CLASS_TEXTS[key] = cached
     return cached[1]
 
@@ -156,8 +158,8 @@ def node_message_text(node_name: str, classes: list[ClassText]) -> str:
         '{"classes": ['
         + ", ".join(c.text for c in classes)
         + "], "
-        + json.dumps(head, sort_keys=True)[1:-1]
-        + f', "node": {json.dumps(node_name)}}}'
+        + dumps(head, sort_keys=True)[1:-1]
+        + f', "node": {dumps(node_name)}}}'
     )
 
 

@@ -1,55 +1,64 @@
 """The tuning page's web app (Starlette): static page, JSON API, server-sent events.
 
 Every call to ROS blocks on a service answer, so it runs in Starlette's thread
-pool; events from ``/parameter_events`` reach each open page through an
-asyncio queue fed from the graph's executor thread.
+pool; events from ``/parameter_events`` reach each open page through
+:mod:`genparams.tune.events`. Every request passes :mod:`genparams.tune.security`
+first; :mod:`genparams.tune.bodies` reads what it sends, and every answer is
+written by the one JSON codec (:mod:`genparams.tune.json_response`).
 """
 
 from __future__ import annotations
 
-import asyncio
-import hmac
-import json
-from collections.abc import AsyncIterator
 from pathlib import Path
 from typing import Any
 
 from starlette.applications import Starlette
 from starlette.concurrency import run_in_threadpool
 from starlette.requests import Request
-from starlette.responses import FileResponse, JSONResponse, Response, StreamingResponse
+from starlette.responses import FileResponse, Response
 from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
+from starlette.types import ASGIApp
 
 from genparams import __version__
-from genparams.tune.checking import Checker, json_parameter
+from genparams.tune.bodies import RequestError, edits, node_name, set_request
+from genparams.tune.checking import Checker
+from genparams.tune.events import EventStreams
 from genparams.tune.graph import Graph
+from genparams.tune.json_response import JSONResponse
 from genparams.tune.params_dump import params_file_text
+from genparams.tune.security import Gate, Policy
 
 STATIC = Path(__file__).resolve().parent / "static"
-KEEPALIVE_SECONDS = 15.0
+WRITES = frozenset({"/api/set"})  # /api/check changes nothing: a read-only page may ask it
 
 
 class TuneApp:
-    """The routes over one :class:`Graph`; ``token`` guards every API call when set."""
+    """The routes over one :class:`Graph`, behind the :class:`Gate` of ``token``.
+
+    Naming ``nodes`` restricts every route to them: others are not listed, not
+    read, not set, and their events are not sent.
+    """
 
     def __init__(
         self,
         graph: Graph,
         *,
-        token: str | None = None,
+        token: str,
         read_only: bool = False,
         nodes: tuple[str, ...] = (),
-        trusted_validators: tuple[str, ...] = (),
+        host: str = "127.0.0.1",
+        trusted_packages: tuple[str, ...] = (),
     ) -> None:
         self.graph = graph
-        self.checker = Checker(graph.node, trusted_validators)
-        self.token = token
+        self.policy = Policy(token=token, bound_host=host, read_only=read_only, writes=WRITES)
+        self.checker = Checker(graph.node, trusted_packages)
         self.read_only = read_only
         self.only_nodes = nodes
+        self.streams = EventStreams(graph, self.shown)
 
-    def starlette(self) -> Starlette:
-        return Starlette(
+    def starlette(self) -> ASGIApp:
+        app = Starlette(
             routes=[
                 Route("/", self.index),
                 Route("/api/config", self.config),
@@ -60,81 +69,72 @@ class TuneApp:
                 Route("/api/params-file", self.params_file),
                 Route("/api/events", self.events),
                 Mount("/static", StaticFiles(directory=STATIC), name="static"),
-            ]
+            ],
+            exception_handlers={RequestError: bad_request},
         )
+        return Gate(app, self.policy)
 
-    def denied(self, request: Request) -> Response | None:
-        """A 403 unless the request carries the token (header or query), when one is set."""
-        if self.token is None:
-            return None
-        given = request.headers.get("x-genparams-token") or request.query_params.get("token", "")
-        if hmac.compare_digest(given.encode(), self.token.encode()):
-            return None
-        return JSONResponse({"error": "missing or wrong token"}, status_code=403)
+    def shown(self, name: str) -> bool:
+        return not self.only_nodes or name in self.only_nodes
+
+    async def target(self, given: object) -> str:
+        """The node a request names: valid, served here and in the graph, or a refusal."""
+        name = node_name(given)
+        if not self.shown(name):
+            raise NotServedError(403, f"{name} is not served by this page")
+        if name not in await run_in_threadpool(self.graph.node_names):
+            # No service clients for a node that is not there: each would stay behind.
+            raise NotServedError(404, f"{name} is not in the graph")
+        return name
 
     async def index(self, request: Request) -> Response:
         return FileResponse(STATIC / "index.html", headers={"cache-control": "no-store"})
 
     async def config(self, request: Request) -> Response:
-        if (denied := self.denied(request)) is not None:
-            return denied
         return JSONResponse({"read_only": self.read_only, "version": __version__})
 
     async def nodes(self, request: Request) -> Response:
-        if (denied := self.denied(request)) is not None:
-            return denied
         names = await run_in_threadpool(self.graph.node_names)
-        if self.only_nodes:
-            names = [n for n in names if n in self.only_nodes]
-        listed = [{"name": n, "genparams": self.graph.schema(n) is not None} for n in names]
+        listed = []
+        for n in filter(self.shown, names):
+            schema, problem = self.graph.schema_state(n)
+            listed.append({"name": n, "genparams": schema is not None, "schema_problem": problem})
         return JSONResponse({"nodes": listed})
 
     async def node(self, request: Request) -> Response:
-        if (denied := self.denied(request)) is not None:
-            return denied
-        name = request.query_params.get("name", "")
+        name = await self.target(request.query_params.get("name"))
         try:
             parameters = await run_in_threadpool(self.graph.read_node, name)
         except TimeoutError as exc:
             return JSONResponse({"error": str(exc)}, status_code=504)
+        schema, problem = self.graph.schema_state(name)
         return JSONResponse(
-            {"node": name, "schema": self.graph.schema(name), "parameters": parameters}
+            {"node": name, "schema": schema, "schema_problem": problem, "parameters": parameters}
         )
 
     async def set(self, request: Request) -> Response:
-        if (denied := self.denied(request)) is not None:
-            return denied
-        if self.read_only:
+        if self.read_only:  # the gate refuses it first; a second lock on the one write
             return JSONResponse({"error": "this page is read-only"}, status_code=403)
+        wanted = set_request(await request.body())
+        node = await self.target(wanted.node)
         try:
-            body = await request.json()
-            node = str(body["node"])
-            parameters = [json_parameter(p["name"], p["type"], p["value"]) for p in body["params"]]
-            atomic = bool(body.get("atomic", False))
-        except (ValueError, KeyError, TypeError) as exc:
-            return JSONResponse({"error": f"bad request: {exc}"}, status_code=400)
-        try:
-            results = await run_in_threadpool(self.graph.set_parameters, node, parameters, atomic)
+            results = await run_in_threadpool(
+                self.graph.set_parameters, node, wanted.parameters, wanted.atomic
+            )
         except TimeoutError as exc:
             return JSONResponse({"error": str(exc)}, status_code=504)
         return JSONResponse({"results": results})
 
     async def check(self, request: Request) -> Response:
         """What the node would answer to an atomic set of ``params``, without setting them."""
-        if (denied := self.denied(request)) is not None:
-            return denied
-        try:
-            body = await request.json()
-            node = str(body["node"])
-            edits = [(str(p["name"]), p["type"], p["value"]) for p in body["params"]]
-        except (ValueError, KeyError, TypeError) as exc:
-            return JSONResponse({"error": f"bad request: {exc}"}, status_code=400)
+        wanted = edits(await request.body())
+        node = await self.target(wanted.node)
 
         def answer() -> dict[str, Any]:
             message = self.graph.schema(node)
-            wanted = self.checker.wanted(node, message, edits)
-            declared, current = self.graph.read_parameters(node, wanted)
-            return self.checker.check(node, message, current, edits, declared)
+            reads = self.checker.wanted(node, message, wanted.params)
+            declared, current = self.graph.read_parameters(node, reads)
+            return self.checker.check(node, message, current, wanted.params, declared)
 
         try:
             return JSONResponse(await run_in_threadpool(answer))
@@ -142,9 +142,7 @@ class TuneApp:
             return JSONResponse({"error": str(exc)}, status_code=504)
 
     async def params_file(self, request: Request) -> Response:
-        if (denied := self.denied(request)) is not None:
-            return denied
-        name = request.query_params.get("node", "")
+        name = await self.target(request.query_params.get("node"))
         try:
             parameters = await run_in_threadpool(self.graph.read_node, name)
         except TimeoutError as exc:
@@ -158,29 +156,17 @@ class TuneApp:
         )
 
     async def events(self, request: Request) -> Response:
-        if (denied := self.denied(request)) is not None:
-            return denied
-        loop = asyncio.get_running_loop()
-        queue: asyncio.Queue[dict[str, Any]] = asyncio.Queue()
+        return self.streams.response()
 
-        def listener(event: dict[str, Any]) -> None:
-            loop.call_soon_threadsafe(queue.put_nowait, event)
 
-        unsubscribe = self.graph.subscribe(listener)
+class NotServedError(RequestError):
+    """A well-formed request this page will not serve (403) or cannot find (404)."""
 
-        async def stream() -> AsyncIterator[str]:
-            try:
-                yield ": connected\n\n"
-                while True:
-                    try:
-                        event = await asyncio.wait_for(queue.get(), KEEPALIVE_SECONDS)
-                    except TimeoutError:
-                        yield ": keepalive\n\n"
-                        continue
-                    yield f"data: {json.dumps(event)}\n\n"
-            finally:
-                unsubscribe()
+    def __init__(self, status: int, reason: str) -> None:
+        super().__init__(reason)
+        self.status = status
 
-        return StreamingResponse(
-            stream(), media_type="text/event-stream", headers={"cache-control": "no-store"}
-        )
+
+async def bad_request(request: Request, exc: Exception) -> Response:
+    status = exc.status if isinstance(exc, NotServedError) else 400
+    return JSONResponse({"error": str(exc)}, status_code=status)

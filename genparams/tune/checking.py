@@ -13,9 +13,10 @@ A node refuses a set in two steps, and this module runs the same code for each:
 
 Custom validators are functions of the node's package. The message names them,
 so a node on the network could name any function of the tuning machine: they run
-here only from modules the user trusts (``genparams tune --trust-validators``)
-that import; any other is checked by the node when the value is applied, and the
-answer says so.
+here only from packages the user trusts (``genparams tune --trust-package``)
+that import, by the rule the audit follows
+(:func:`genparams.runtime.schema_message.why_not_run`); any other is checked by
+the node when the value is applied, and the answer says so.
 
 What only the node knows is left to it: its other on-set callbacks, the
 lifecycle state that configure-only parameters need, and the overrides of new
@@ -35,9 +36,9 @@ from rclpy.parameter import Parameter
 
 from genparams.runtime.binding import check_each
 from genparams.runtime.naming import ENTRY_KEY, join_prefix
-from genparams.runtime.published_spec import class_spec
 from genparams.runtime.rclpy_internals import descriptor_check, undeclared_check
 from genparams.runtime.rule_check import violations
+from genparams.runtime.schema_message import class_spec, why_not_run
 from genparams.runtime.spec import CompiledParam, CompiledSchema, compile_uncached
 from genparams.runtime.types import TYPES
 from genparams.runtime.validators import Custom, Validator
@@ -81,22 +82,12 @@ class CheckedByNode:
         return f"{self.custom.describe()} (checked by the node on apply: {self.why})"
 
 
-def is_trusted(target: str, trusted: Sequence[str]) -> bool:
-    module = target.partition(":")[0]
-    return any(module == t or module.startswith(t + ".") for t in trusted)
-
-
 def runnable(check: Validator, trusted: Sequence[str]) -> Validator:
     """``check``, or a stand-in saying why the node alone runs it."""
     if not isinstance(check, Custom):
         return check
-    if not is_trusted(check.target, trusted):
-        return CheckedByNode(check, "its module is not trusted here (--trust-validators)")
-    try:
-        check.resolve()
-    except Exception as exc:  # any import error: the module is not usable on this machine
-        return CheckedByNode(check, f"it does not import here ({type(exc).__name__}: {exc})")
-    return check
+    why = why_not_run(check, trusted)
+    return check if why is None else CheckedByNode(check, why)
 
 
 def not_run_here(param: CompiledParam) -> list[str]:
@@ -294,13 +285,18 @@ class ProposalCheck:
         return param.type.from_ros(read["value"])
 
 
+MAX_COMPILED = 64
+"""Nodes whose compiled messages are kept: nodes come and go, the server stays flat."""
+
+
 class Checker:
     """The tuning server's checks: each node's schema message compiled once, on demand."""
 
-    def __init__(self, node: Node, trusted_validators: Sequence[str] = ()) -> None:
+    def __init__(self, node: Node, trusted_packages: Sequence[str] = ()) -> None:
         self.node = node
-        self.trusted = tuple(trusted_validators)
-        # node name -> (the message compiled, its classes or why it could not be)
+        self.trusted = tuple(trusted_packages)
+        # node name -> (the message compiled, its classes or why it could not be); the
+        # least recently compiled go first past MAX_COMPILED nodes.
         self.compiled: dict[str, tuple[object, tuple[ClassChecks, ...] | str]] = {}
 
     def classes(
@@ -314,6 +310,9 @@ class Checker:
                 found: tuple[ClassChecks, ...] | str = compile_message(message, self.trusted)
             except SchemaMessageError as exc:
                 found = f"its schema message cannot be checked here: {exc}"
+            self.compiled.pop(node_name, None)
+            while len(self.compiled) >= MAX_COMPILED:
+                del self.compiled[next(iter(self.compiled))]
             cached = self.compiled[node_name] = (message, found)
         found = cached[1]
         return ((), found) if isinstance(found, str) else (found, None)

@@ -5,21 +5,27 @@ everything ``ros2 param`` does: the parameter services of each node, the latched
 ``<node>/genparams/schema`` topics of self-describing nodes, and
 ``/parameter_events`` for changes made by anyone else. Calls return rclpy
 Futures; :func:`wait_future` and the web app's bridge turn them into results.
+
+A schema message is trusted only when it is well formed (read by
+:mod:`~genparams.runtime.schema_message`) and every node that published on the
+topic is the node the topic belongs to; otherwise the node gets a problem in
+place of its schema, and the rest of the graph is unaffected.
 """
 
 from __future__ import annotations
 
-import json
+import logging
 import threading
 import time
 from collections.abc import Callable, Iterable, Sequence
+from dataclasses import dataclass
 from typing import Any
 
 import rclpy
 from rcl_interfaces.msg import ParameterEvent
 from rclpy.client import Client
 from rclpy.context import Context
-from rclpy.executors import MultiThreadedExecutor
+from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor, ShutdownException
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.parameter_client import AsyncParameterClient
@@ -30,17 +36,21 @@ from rclpy.qos import (
     ReliabilityPolicy,
     qos_profile_parameter_events,
 )
+from rclpy.subscription import Subscription
 from std_msgs.msg import String
 
+from genparams.runtime.schema_message import SchemaProblem, read_schema_message
 from genparams.runtime.schema_topic import SCHEMA_TOPIC_SUFFIX
 from genparams.tune.reader import (
     ParameterReader,
+    answers,
     python_value,
     read_all,
     read_named,
-    wait_future,
 )
 
+LOG = logging.getLogger("genparams.tune")
+SWEEP_SECONDS = 1.0
 SCHEMA_QOS = QoSProfile(
     depth=1,
     history=HistoryPolicy.KEEP_LAST,
@@ -48,6 +58,25 @@ SCHEMA_QOS = QoSProfile(
     durability=DurabilityPolicy.TRANSIENT_LOCAL,
 )
 EventListener = Callable[[dict[str, Any]], None]
+
+
+NOT_IDENTIFIED = "published by a node not identified yet"  # DDS knows it, ROS not its name
+
+
+@dataclass(frozen=True)
+class Received:
+    """The last message on a node's schema topic and who published on the topic then."""
+
+    message: dict[str, Any] | SchemaProblem
+    writers: tuple[tuple[bytes, str | None], ...]  # (endpoint gid, node name if known)
+
+
+def publisher_node(info: Any) -> str | None:
+    """The full name of a publisher's node, or None while discovery has not told it."""
+    name, namespace = info.node_name, info.node_namespace
+    if name.startswith("_NODE_NAME_UNKNOWN") or namespace.startswith("_NODE_NAMESPACE_UNKNOWN"):
+        return None
+    return f"{namespace.rstrip('/')}/{name}"
 
 
 class Graph:
@@ -60,9 +89,11 @@ class Graph:
         self.executor = MultiThreadedExecutor(num_threads=4, context=self.context)
         self.executor.add_node(self.node)
         self.lock = threading.Lock()
-        self.schemas: dict[str, dict[str, Any]] = {}  # node name -> its schema message
-        self.schema_times: dict[str, float] = {}
+        self.schemas: dict[str, Received] = {}  # node name -> what its schema topic carried
         self.subscribed: set[str] = set()
+        self.schema_subscriptions: dict[str, Subscription] = {}
+        self.absent: set[str] = set()  # nodes the last sweep found gone (see sweep)
+        self.quiet: set[str] = set()  # schema topics it found without a publisher
         self.readers: dict[str, ParameterReader] = {}
         self.setters: dict[str, AsyncParameterClient] = {}
         self.listeners: list[EventListener] = []
@@ -70,14 +101,25 @@ class Graph:
             ParameterEvent, "/parameter_events", self.on_event, qos_profile_parameter_events
         )
         self.node.create_timer(0.25, self.watch_schema_topics)
+        self.node.create_timer(SWEEP_SECONDS, self.sweep)
         self.thread = threading.Thread(target=self.spin, name="genparams-graph", daemon=True)
         self.thread.start()
 
     def spin(self) -> None:
-        try:
-            self.executor.spin()
-        except Exception:  # shutdown while spinning ends the thread quietly
-            pass
+        """Spin until :meth:`close`; a callback's error is logged and spinning goes on.
+
+        One bad message or a race inside rclpy must not end the thread that answers
+        every page and audit.
+        """
+        while self.context.ok():
+            try:
+                self.executor.spin()
+            except (ExternalShutdownException, ShutdownException):
+                return
+            except Exception:
+                if not self.context.ok():
+                    return  # shutdown while spinning ends the thread quietly
+                LOG.exception("genparams tune: the ROS executor went on after an error")
 
     def close(self) -> None:
         self.executor.shutdown(timeout_sec=1.0)
@@ -104,32 +146,95 @@ class Graph:
                 if topic in self.subscribed:
                     continue
                 self.subscribed.add(topic)
-            self.node.create_subscription(String, topic, self.on_schema, SCHEMA_QOS)
+            owner = topic[: -len(SCHEMA_TOPIC_SUFFIX)]
 
-    def on_schema(self, message: String) -> None:
-        try:
-            schema = json.loads(message.data)
-            name = schema["node"]
-        except (ValueError, KeyError, TypeError):
-            return  # not ours: a stray publisher on a look-alike topic
+            def received(message: String, owner: str = owner) -> None:
+                self.on_schema(owner, message)
+
+            subscription = self.node.create_subscription(String, topic, received, SCHEMA_QOS)
+            with self.lock:
+                self.schema_subscriptions[topic] = subscription
+
+    def sweep(self) -> None:
+        """Let go of what nodes that left the graph held: service clients, schemas, topics.
+
+        A node or topic gone at two sweeps in a row is gone (one sweep could race a
+        client made for a node discovered meanwhile). Without this, every node name
+        ever asked for would keep its clients, and node churn would grow the server.
+        """
+        present = set(self.node_names())
         with self.lock:
-            self.schemas[name] = schema
-            self.schema_times[name] = time.monotonic()
-        self.dispatch({"kind": "schema", "node": name})
+            held = {*self.readers, *self.setters, *self.schemas}
+            topics = list(self.schema_subscriptions)
+        quiet = {t for t in topics if self.node.count_publishers(t) == 0}
+        gone = {n for n in held if n not in present}
+        gone_nodes, self.absent = gone & self.absent, gone
+        gone_topics, self.quiet = quiet & self.quiet, quiet
+        for topic in gone_topics:
+            with self.lock:
+                subscription = self.schema_subscriptions.pop(topic)
+                self.subscribed.discard(topic)
+            self.node.destroy_subscription(subscription)
+        for name in gone_nodes:
+            self.forget(name)
+            with self.lock:
+                self.schemas.pop(name, None)
+
+    def writers(self, node_name: str) -> dict[bytes, str | None]:
+        """The publishers on a node's schema topic: endpoint gid -> node name (None: unknown)."""
+        infos = self.node.get_publishers_info_by_topic(node_name + SCHEMA_TOPIC_SUFFIX)
+        return {bytes(info.endpoint_gid): publisher_node(info) for info in infos}
+
+    def on_schema(self, owner: str, message: String) -> None:
+        """Keep the message of ``owner``'s topic, read but not yet trusted; never raises."""
+        try:
+            read = read_schema_message(message.data, owner)
+            writers = tuple(self.writers(owner).items())
+        except Exception as exc:  # a callback that raises would end the executor's thread
+            read, writers = SchemaProblem(f"schema message cannot be read: {exc!r}"), ()
+        with self.lock:
+            self.schemas[owner] = Received(read, writers)
+        self.dispatch({"kind": "schema", "node": owner})
+
+    def schema_state(self, node_name: str) -> tuple[dict[str, Any] | None, str | None]:
+        """(the node's schema, None) when trusted; (None, the problem) when not; or neither."""
+        with self.lock:
+            received = self.schemas.get(node_name)
+        if received is None:
+            return None, None
+        if isinstance(received.message, SchemaProblem):
+            return None, received.message.detail
+        current = self.writers(node_name)
+        for gid, known in (*received.writers, *current.items()):
+            name = current.get(gid) or known
+            if name is None and gid in current:
+                return None, NOT_IDENTIFIED
+            if name is None:
+                return None, "published by a node that left before it was identified"
+            if name != node_name:
+                return None, f"{name}, not {node_name}, published on {node_name}'s schema topic"
+        return received.message, None
 
     def schema(self, node_name: str) -> dict[str, Any] | None:
-        with self.lock:
-            return self.schemas.get(node_name)
+        """The node's schema message, when it is well formed and its own."""
+        return self.schema_state(node_name)[0]
 
     def wait_for_schemas(self, names: Iterable[str], timeout: float) -> None:
-        """Wait until each of ``names`` has published its schema, or ``timeout`` passed."""
+        """Wait until each of ``names`` has published a schema its publishers can be told of.
+
+        Each waits at most ``timeout``; a node whose publishers stay unidentified
+        keeps that problem.
+        """
         deadline = time.monotonic() + timeout
-        wanted = set(names)
-        while time.monotonic() < deadline:
-            with self.lock:
-                if wanted <= self.schemas.keys():
-                    return
-            time.sleep(0.02)
+        pending = set(names)
+        while pending and time.monotonic() < deadline:
+            pending = {
+                name
+                for name in pending
+                if name not in self.schemas or self.schema_state(name)[1] == NOT_IDENTIFIED
+            }
+            if pending:
+                time.sleep(0.02)
 
     # Parameter services -------------------------------------------------------
 
@@ -194,10 +299,10 @@ class Graph:
                     raise TimeoutError(f"{node_name}: parameter services did not appear")
                 time.sleep(0.005)
         if atomic:
-            result = wait_future(client.set_parameters_atomically(parameters), timeout).result
-            results = [result] * len(parameters)
+            sent = answers([lambda: client.set_parameters_atomically(parameters)], timeout)
+            results = [sent[0].result] * len(parameters)
         else:
-            results = wait_future(client.set_parameters(parameters), timeout).results
+            results = answers([lambda: client.set_parameters(parameters)], timeout)[0].results
         return [
             {"name": p.name, "successful": r.successful, "reason": r.reason}
             for p, r in zip(parameters, results, strict=True)

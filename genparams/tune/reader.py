@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import threading
 import time
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import Any
 
 from rcl_interfaces.msg import ParameterType, ParameterValue
@@ -20,6 +20,7 @@ from rclpy.node import Node
 from rclpy.parameter import parameter_value_to_python
 from rclpy.task import Future
 
+RESEND_SECONDS = 1.0
 TYPE_NAMES = {
     ParameterType.PARAMETER_BOOL: "bool",
     ParameterType.PARAMETER_INTEGER: "int",
@@ -89,28 +90,57 @@ class ParameterReader:
             self.node.destroy_client(client)
 
 
+def answers(calls: Sequence[Callable[[], Future]], timeout: float) -> list[Any]:
+    """Send every call; resend those unanswered after ``RESEND_SECONDS``, until ``timeout``.
+
+    A service can be ready before the path of its replies to a new client is
+    matched: a request sent then is never answered, so it is sent again. Every
+    call made here is a read or a set of given values, so sending twice is harmless.
+    """
+    deadline = time.monotonic() + timeout
+    results: list[Any] = [None] * len(calls)
+    waiting = list(range(len(calls)))
+    while waiting:
+        futures = {index: calls[index]() for index in waiting}
+        attempt = min(RESEND_SECONDS, max(0.0, deadline - time.monotonic()))
+        for index, future in futures.items():
+            try:
+                results[index] = wait_future(future, attempt)
+            except TimeoutError:
+                if time.monotonic() >= deadline:
+                    raise
+        waiting = [index for index in waiting if results[index] is None]
+    return results
+
+
 def read_all(readers: Sequence[ParameterReader], timeout: float) -> dict[str, list[dict[str, Any]]]:
     """Every parameter of every reader's node; each step's calls go out together."""
     for reader in readers:
         if not reader.wait_ready(timeout):
             raise TimeoutError(f"{reader.target}: parameter services did not appear")
-    listing = [r.lister.call_async(ListParameters.Request(depth=0)) for r in readers]
-    names = [sorted(wait_future(f, timeout).result.names) for f in listing]
-    getting = [
-        r.getter.call_async(GetParameters.Request(names=n))
-        for r, n in zip(readers, names, strict=True)
+
+    def lister(r: ParameterReader) -> Callable[[], Future]:
+        return lambda: r.lister.call_async(ListParameters.Request(depth=0))
+
+    def getter(r: ParameterReader, n: list[str]) -> Callable[[], Future]:
+        return lambda: r.getter.call_async(GetParameters.Request(names=n))
+
+    def describer(r: ParameterReader, n: list[str]) -> Callable[[], Future]:
+        return lambda: r.describer.call_async(DescribeParameters.Request(names=n))
+
+    names = [
+        sorted(listed.result.names) for listed in answers([lister(r) for r in readers], timeout)
     ]
-    describing = [
-        r.describer.call_async(DescribeParameters.Request(names=n))
-        for r, n in zip(readers, names, strict=True)
-    ]
+    pairs = list(zip(readers, names, strict=True))
+    got = answers([getter(r, n) for r, n in pairs], timeout)
+    described = answers([describer(r, n) for r, n in pairs], timeout)
     return {
         reader.target: parameters_of(
             listed,
-            values_or_unset(reader, listed, wait_future(got, timeout).values, timeout),
-            wait_future(described, timeout).descriptors,
+            values_or_unset(reader, listed, values.values, timeout),
+            descriptors.descriptors,
         )
-        for reader, listed, got, described in zip(readers, names, getting, describing, strict=True)
+        for reader, listed, values, descriptors in zip(readers, names, got, described, strict=True)
     }
 
 
@@ -120,14 +150,19 @@ def read_named(
     """Every name the node declares, and those of ``names`` it declares, read in full."""
     if not reader.wait_ready(timeout):
         raise TimeoutError(f"{reader.target}: parameter services did not appear")
-    listing = reader.lister.call_async(ListParameters.Request(depth=0))
-    declared = list(wait_future(listing, timeout).result.names)
+    listed = answers([lambda: reader.lister.call_async(ListParameters.Request(depth=0))], timeout)
+    declared = list(listed[0].result.names)
     known = set(declared)
     wanted = [name for name in dict.fromkeys(names) if name in known]
-    got = reader.getter.call_async(GetParameters.Request(names=wanted))
-    described = reader.describer.call_async(DescribeParameters.Request(names=wanted))
-    values = values_or_unset(reader, wanted, wait_future(got, timeout).values, timeout)
-    return declared, parameters_of(wanted, values, wait_future(described, timeout).descriptors)
+    got, described = answers(
+        [
+            lambda: reader.getter.call_async(GetParameters.Request(names=wanted)),
+            lambda: reader.describer.call_async(DescribeParameters.Request(names=wanted)),
+        ],
+        timeout,
+    )
+    values = values_or_unset(reader, wanted, got.values, timeout)
+    return declared, parameters_of(wanted, values, described.descriptors)
 
 
 def values_or_unset(
@@ -138,8 +173,8 @@ def values_or_unset(
     if len(values) == len(names):
         return values
     alone = [reader.getter.call_async(GetParameters.Request(names=[name])) for name in names]
-    answers = [wait_future(future, timeout).values for future in alone]
-    return [answer[0] if answer else ParameterValue() for answer in answers]
+    replies = [wait_future(future, timeout).values for future in alone]
+    return [reply[0] if reply else ParameterValue() for reply in replies]
 
 
 def parameters_of(

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import ipaddress
 import secrets
 import threading
 import time
@@ -11,19 +10,19 @@ import uvicorn
 
 from genparams.tune.app import TuneApp
 from genparams.tune.graph import Graph
+from genparams.tune.security import token_problem, url_host
 
 
-def is_loopback(host: str) -> bool:
-    if host == "localhost":
-        return True
-    try:
-        return ipaddress.ip_address(host).is_loopback
-    except ValueError:
-        return False
+def new_token() -> str:
+    return secrets.token_urlsafe(24)
 
 
 class TuneServer:
-    """The page for the live graph at ``url``; any host but loopback gets a token."""
+    """The page for the live graph at ``url``, which carries the token (a new one per run).
+
+    Every API call needs the token, on loopback too: any local program, and any
+    web page the browser shows, can reach a loopback port.
+    """
 
     def __init__(
         self,
@@ -34,26 +33,31 @@ class TuneServer:
         read_only: bool = False,
         token: str | None = None,
         graph: Graph | None = None,
-        trusted_validators: tuple[str, ...] = (),
+        trusted_packages: tuple[str, ...] = (),
     ) -> None:
-        if token is None and not is_loopback(host):
-            token = secrets.token_urlsafe(24)
+        if token is None:
+            token = new_token()
+        elif (problem := token_problem(token)) is not None:
+            raise ValueError(problem)
         self.host = host
         self.token = token
         self.owns_graph = graph is None
         self.graph = graph if graph is not None else Graph()
-        app = TuneApp(
+        self.app = TuneApp(
             self.graph,
             token=token,
             read_only=read_only,
             nodes=nodes,
-            trusted_validators=trusted_validators,
+            host=host,
+            trusted_packages=trusted_packages,
         )
         config = uvicorn.Config(
-            app.starlette(),
+            self.app.starlette(),
             host=host,
             port=port,
             log_level="warning",
+            access_log=False,  # a request line could carry the token
+            server_header=False,
             lifespan="off",
             timeout_graceful_shutdown=1,
         )
@@ -61,11 +65,25 @@ class TuneServer:
         self.thread: threading.Thread | None = None
 
     @property
+    def port(self) -> int:
+        return int(self.server.servers[0].sockets[0].getsockname()[1])
+
+    @property
+    def base(self) -> str:
+        """``http://HOST:PORT`` without the token: for API calls that send it in a header."""
+        shown = (
+            "127.0.0.1"
+            if self.host in ("0.0.0.0", "")
+            else "[::1]"
+            if self.host == "::"
+            else self.host
+        )
+        return f"http://{url_host(shown)}:{self.port}"
+
+    @property
     def url(self) -> str:
-        port = self.server.servers[0].sockets[0].getsockname()[1]
-        shown = f"[{self.host}]" if ":" in self.host else self.host
-        query = f"/?token={self.token}" if self.token else "/"
-        return f"http://{shown}:{port}{query}"
+        """The page's address with the token, for the browser (which keeps it in a cookie)."""
+        return f"{self.base}/?token={self.token}"
 
     def start(self, timeout: float = 10.0) -> str:
         """Serve from a background thread; return the URL once the socket listens."""

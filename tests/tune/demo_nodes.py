@@ -1,12 +1,14 @@
 """Real nodes for the tuning and audit tests, in a process of their own.
 
 ``python -m tests.tune.demo_nodes NAME:KIND ...`` starts one node per argument
-(KIND: camera, arm, motion, plain, loose, edges, checks, or wideN with N parameters) and prints
-"ready" once every node is declared. ROS arguments for every node follow ``--``.
+(KIND: camera, arm, motion, nonfinite, plain, loose, hostile, edges, checks, or wideN with
+N parameters) and prints "ready" once every node is declared. ROS arguments for every node
+follow ``--``.
 """
 
 from __future__ import annotations
 
+import json
 import sys
 import tempfile
 from pathlib import Path
@@ -25,6 +27,7 @@ SCHEMAS = {
     "camera": ROOT / "examples/camera_node/camera_driver.yaml",
     "arm": ROOT / "examples/arm/arm.yaml",
     "motion": ROOT / "examples/motion/motion.yaml",
+    "nonfinite": ROOT / "tests/tune/nonfinite.yaml",
 }
 
 
@@ -39,6 +42,20 @@ def wide_schema(count: int) -> str:
                 f" range: {{min: 0.0, max: 10.0, step: 0.5}}, description: Value {index}.}}"
             )
     return "\n".join(lines) + "\n"
+
+
+# Markup and script in every text a schema lets a node publish: the page shows it as text.
+HOSTILE_TEXT = '<img src=x onerror="window.pwned=1"><script>window.pwned=2</script>'
+
+
+def hostile_schema() -> str:
+    text = json.dumps(HOSTILE_TEXT)  # a JSON string is a double-quoted YAML scalar
+    return (
+        f"genparams: 1\nname: hostile\ndescription: {text}\nparameters:\n"
+        f"  mode: {{type: string, default: ok, description: {text}, unit: {text},"
+        f" choices: [ok, {text}]}}\n"
+        f"  gain: {{type: double, default: 1.0, description: {text}, unit: {text}}}\n"
+    )
 
 
 # What the page's checks are tested on: a pattern, double edges and a step, a rule, a custom
@@ -66,6 +83,8 @@ def schema_text(kind: str, workdir: Path) -> tuple[Path, str] | None:
     """The schema of a kind written in code, or None for an example's file."""
     if kind.startswith("wide"):
         return workdir / "wide.yaml", wide_schema(int(kind[4:] or 1000))
+    if kind == "hostile":
+        return workdir / "hostile.yaml", hostile_schema()
     if kind == "edges":
         return workdir / "edges.yaml", EDGES_SCHEMA
     if kind == "checks":

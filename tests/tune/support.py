@@ -2,15 +2,21 @@
 
 from __future__ import annotations
 
+import http.client
+import json
 import os
 import subprocess
 import sys
 import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
+from genparams.runtime.json_codec import dumps
 from tests.support import ROOT
+
+if TYPE_CHECKING:
+    from genparams.tune.server import TuneServer
 
 CHROMIUM = "/usr/bin/chromium"
 CHROMIUM_ARGS = [
@@ -66,3 +72,71 @@ def eventually(probe: Callable[[], Any], timeout: float = 10.0, interval: float 
         if time.monotonic() > deadline:
             raise AssertionError(f"condition not met within {timeout} s (last: {value!r})")
         time.sleep(interval)
+
+
+class Answer:
+    """One HTTP answer: status, headers (lower-case names) and body."""
+
+    def __init__(self, status: int, headers: dict[str, str], body: bytes) -> None:
+        self.status = status
+        self.headers = headers
+        self.body = body
+
+    @property
+    def ok(self) -> bool:
+        return self.status == 200
+
+    def json(self) -> Any:
+        return json.loads(self.body)
+
+
+def open_stream(port: int, token: str) -> tuple[http.client.HTTPConnection, int]:
+    """An event stream left open (close the connection to end it), and its status."""
+    connection = http.client.HTTPConnection("127.0.0.1", port, timeout=30)
+    connection.request("GET", "/api/events", headers={"X-Genparams-Token": token})
+    return connection, connection.getresponse().status
+
+
+def http_call(
+    port: int,
+    method: str,
+    path: str,
+    *,
+    body: bytes | None = None,
+    headers: dict[str, str] | None = None,
+    token: str | None = None,
+) -> Answer:
+    """A raw request to 127.0.0.1:``port``; ``headers`` may name any Host."""
+    connection = http.client.HTTPConnection("127.0.0.1", port, timeout=30)
+    sent = {"Host": f"127.0.0.1:{port}"}
+    if body is not None:
+        sent["Content-Type"] = "application/json"
+    if token is not None:
+        sent["X-Genparams-Token"] = token
+    sent.update(headers or {})
+    try:
+        connection.putrequest(method, path, skip_host=True, skip_accept_encoding=True)
+        for name, value in sent.items():
+            connection.putheader(name, value)
+        if body is not None and "Transfer-Encoding" not in sent:
+            connection.putheader("Content-Length", str(len(body)))
+        connection.endheaders()
+        if body is not None:
+            connection.send(body)
+        response = connection.getresponse()
+        return Answer(
+            response.status,
+            {name.lower(): value for name, value in response.getheaders()},
+            response.read(),
+        )
+    finally:
+        connection.close()
+
+
+def api_call(server: TuneServer, path: str, body: Any = None) -> Answer:
+    """A call to a tuning server's API as a client other than the page makes it: the token in
+    its header; with a body (bytes, or a value the codec writes), a JSON POST, else a GET."""
+    if body is not None and not isinstance(body, bytes):
+        body = dumps(body).encode("ascii")
+    method = "GET" if body is None else "POST"
+    return http_call(server.port, method, path, body=body, token=server.token)

@@ -6,7 +6,13 @@ from typing import Any
 
 import pytest
 
-from genparams.tune.checking import CheckedByNode, Checker, SchemaMessageError, compile_message
+from genparams.tune.checking import (
+    MAX_COMPILED,
+    CheckedByNode,
+    Checker,
+    SchemaMessageError,
+    compile_message,
+)
 from tests.support import RosHarness
 
 
@@ -67,11 +73,22 @@ def test_a_node_with_a_bad_message_is_still_checked_by_its_descriptors(ros: RosH
     assert not unknown["results"][0]["successful"]
 
 
-def test_trusted_modules_are_named_on_the_command_line() -> None:
+def test_trusted_packages_are_named_alike_for_tune_and_audit() -> None:
     from genparams.cli import build_parser
 
-    args = build_parser().parse_args(
-        ["tune", "--trust-validators", "my_robot.checks", "--trust-validators", "other"]
-    )
-    assert args.trust_validators == ["my_robot.checks", "other"]
-    assert build_parser().parse_args(["tune"]).trust_validators == []
+    for command in ("tune", "audit"):
+        args = build_parser().parse_args(
+            [command, "--trust-package", "my_robot.checks", "--trust-package", "other"]
+        )
+        assert args.trust_package == ["my_robot.checks", "other"]
+        assert build_parser().parse_args([command]).trust_package == []
+
+
+def test_compiled_messages_of_nodes_that_come_and_go_stay_bounded(ros: RosHarness) -> None:
+    checker = Checker(ros.node())
+    for index in range(3 * MAX_COMPILED):
+        classes, problem = checker.classes(f"/churn_{index}", message(param("x")))
+        assert problem is None and classes[0].param("x") is not None
+    assert len(checker.compiled) == MAX_COMPILED
+    last = f"/churn_{3 * MAX_COMPILED - 1}"
+    assert "/churn_0" not in checker.compiled and last in checker.compiled

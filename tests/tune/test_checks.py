@@ -10,10 +10,7 @@ in flight.
 
 from __future__ import annotations
 
-import json
 import re
-import urllib.error
-import urllib.request
 from collections.abc import Iterator
 from typing import Any
 
@@ -25,7 +22,14 @@ from rclpy.parameter import Parameter
 from genparams.tune.server import TuneServer
 from tests.edge_values import EDGES, SCALAR_EDGES, TOLERANCE, Edge
 from tests.support import RosHarness, ServiceClient
-from tests.tune.support import CHROMIUM, CHROMIUM_ARGS, demo_nodes, eventually, unique
+from tests.tune.support import (
+    CHROMIUM,
+    CHROMIUM_ARGS,
+    api_call,
+    demo_nodes,
+    eventually,
+    unique,
+)
 
 EDGES_NODE, CHECKS_NODE, ARM_NODE = (
     f"/{unique(s)}" for s in ("check_edges", "check_rules", "check_arm")
@@ -41,7 +45,7 @@ def nodes() -> Iterator[None]:
 
 @pytest.fixture(scope="module")
 def server(nodes: None) -> Iterator[TuneServer]:
-    tune = TuneServer(nodes=(EDGES_NODE, CHECKS_NODE, ARM_NODE), trusted_validators=TRUSTED)
+    tune = TuneServer(nodes=(EDGES_NODE, CHECKS_NODE, ARM_NODE), trusted_packages=TRUSTED)
     tune.start()
     tune.graph.wait_for_schemas([EDGES_NODE, CHECKS_NODE, ARM_NODE], timeout=10.0)
     try:
@@ -75,18 +79,8 @@ def client(ros_harness: RosHarness, node: str) -> ServiceClient:
 
 
 def post(server: TuneServer, path: str, body: Any) -> tuple[int, dict[str, Any]]:
-    request = urllib.request.Request(
-        server.url.split("?")[0] + path,
-        data=json.dumps(body).encode(),
-        headers={"content-type": "application/json"},
-    )
-    if server.token:
-        request.add_header("x-genparams-token", server.token)
-    try:
-        with urllib.request.urlopen(request, timeout=30) as response:
-            return int(response.status), json.loads(response.read())
-    except urllib.error.HTTPError as exc:
-        return exc.code, json.loads(exc.read())
+    answer = api_call(server, "/" + path, body)
+    return answer.status, answer.json()
 
 
 def check(server: TuneServer, node: str, *edits: tuple[str, Any]) -> dict[str, Any]:

@@ -1,17 +1,20 @@
-// Calls to the tuning server. A token given in the page's URL goes with every call.
-const token = new URLSearchParams(window.location.search).get("token");
+// Calls to the tuning server. The page's URL carries the token once: the server answers it
+// with an HttpOnly, SameSite=Strict cookie that goes with every later call, and the token
+// leaves the address bar (and so the history, bookmarks and screen shares) at once.
+// Every JSON body, both ways, goes through json.js (NaN and infinities as tags).
+import { parseJson, stringifyJson } from "./json.js";
 
-export function withToken(path) {
-  if (!token) return path;
-  const sep = path.includes("?") ? "&" : "?";
-  return `${path}${sep}token=${encodeURIComponent(token)}`;
+function forgetToken() {
+  const url = new URL(window.location.href);
+  if (!url.searchParams.has("token")) return;
+  url.searchParams.delete("token");
+  window.history.replaceState(window.history.state, "", `${url.pathname}${url.search}${url.hash}`);
 }
+forgetToken();
 
 async function call(path, options = {}) {
-  const headers = { ...(options.headers || {}) };
-  if (token) headers["x-genparams-token"] = token;
-  const response = await fetch(path, { ...options, headers });
-  const body = await response.json();
+  const response = await fetch(path, { ...options, credentials: "same-origin" });
+  const body = await response.text().then(parseJson).catch(() => ({}));
   if (!response.ok) throw new Error(body.error || response.statusText);
   return body;
 }
@@ -24,15 +27,15 @@ export const api = {
     call("/api/set", {
       method: "POST",
       headers: { "content-type": "application/json" },
-      body: JSON.stringify({ node, params, atomic }),
+      body: stringifyJson({ node, params, atomic }),
     }),
   // What the node would answer to setting `params` together, without setting them.
   check: (node, params) =>
     call("/api/check", {
       method: "POST",
       headers: { "content-type": "application/json" },
-      body: JSON.stringify({ node, params }),
+      body: stringifyJson({ node, params }),
     }),
-  paramsFileUrl: (name) => withToken(`/api/params-file?node=${encodeURIComponent(name)}`),
-  events: () => new EventSource(withToken("/api/events")),
+  paramsFileUrl: (name) => `/api/params-file?node=${encodeURIComponent(name)}`,
+  events: () => new EventSource("/api/events"),
 };

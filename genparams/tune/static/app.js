@@ -1,6 +1,7 @@
 // The tuning page: node list, a node's form, edits applied through its parameter services.
 import { api } from "./api.js";
 import { InputError, diffTable, el, mapGroup, row, section } from "./form.js";
+import { parseJson, shownJson, stringifyJson } from "./json.js";
 
 // pending: edits not applied yet; drafts: values being typed (checked, not applied);
 // applying: the edits of the apply in flight and the names the node changed meanwhile.
@@ -57,7 +58,7 @@ function renderDiff() {
   const rows = [];
   for (const [name, meta] of byName) {
     if (!meta.schema || meta.required || meta.optional || !values.has(name)) continue;
-    if (JSON.stringify(meta.default) !== JSON.stringify(values.get(name)))
+    if (stringifyJson(meta.default) !== stringifyJson(values.get(name)))  // NaN equals NaN, inf is not -inf
       rows.push([name, meta.default, values.get(name)]);
   }
   page.view.diff.replaceChildren(diffTable(rows));
@@ -181,7 +182,7 @@ async function applyPending() {
   }
   if (!ok || !page.view) return;
   for (const [name, value] of sent) {
-    if (JSON.stringify(page.pending.get(name)) !== JSON.stringify(value)) continue;  // edited again
+    if (stringifyJson(page.pending.get(name)) !== stringifyJson(value)) continue;  // edited again
     page.pending.delete(name);
     showNote(name, "data-param-node", "");
     if (applying.changed.has(name)) setControl(name, page.view.known.values.get(name));
@@ -235,8 +236,12 @@ function renderNode(data) {
   const diff = el("div", { class: "diff-box" });
   const body = el("div", { class: "sections" });
   const kind = data.schema ? `genparams ${data.schema.genparams} · schema ${data.schema.hash}` : "plain rclpy node";
+  // A schema message that is malformed or not the node's own is shown, never used.
+  const refused = data.schema_problem
+    ? el("p", { class: "schema-problem", "data-schema-problem": true, text: `schema not used: ${data.schema_problem}` })
+    : null;
   const form = el("form", { "data-node": data.node, class: data.schema ? "genparams" : "plain" },
-    el("h2", { text: data.node }), el("p", { class: "hint", text: kind }),
+    el("h2", { text: data.node }), el("p", { class: "hint", text: kind }), refused,
     el("div", { class: "toolbar" }, apply, download), body,
     el("h3", { text: "Differences from the defaults" }), diff);
   form.addEventListener("submit", (event) => event.preventDefault());
@@ -295,7 +300,7 @@ function onEvent(event) {
     page.view.known.values.set(name, value);
     page.applying?.changed.add(name);
     if (!page.pending.has(name)) { setControl(name, value); showError(name, ""); }
-    else showNote(name, "data-param-node", `the node now holds ${JSON.stringify(value)}`);
+    else showNote(name, "data-param-node", `the node now holds ${shownJson(value)}`);
   }
   renderDiff();
 }
@@ -303,25 +308,50 @@ function onEvent(event) {
 async function refreshNodes() {
   const { nodes } = await api.nodes();
   const list = document.getElementById("nodes");
-  const shown = [...list.children].map((li) => `${li.dataset.nodeLink}|${li.dataset.genparams}`).join();
-  if (shown === nodes.map((n) => `${n.name}|${n.genparams}`).join()) return;
+  const shown = [...list.children].map((li) => `${li.dataset.nodeLink}|${li.dataset.genparams}|${li.title}`).join();
+  if (shown === nodes.map((n) => `${n.name}|${n.genparams}|${n.schema_problem || ""}`).join()) return;
   list.replaceChildren(...nodes.map((n) => {
     const link = el("a", { href: `#${n.name}`, text: n.name });
     link.addEventListener("click", () => openNode(n.name));
+    const badge = n.schema_problem ? el("span", { class: "badge schema-problem", text: "bad schema" })
+      : n.genparams ? el("span", { class: "badge", text: "schema" }) : null;
     return el("li", { "data-node-link": n.name, "data-genparams": String(n.genparams),
-      class: n.name === page.node ? "selected" : "" }, link, n.genparams ? el("span", { class: "badge", text: "schema" }) : null);
+      title: n.schema_problem || "", class: n.name === page.node ? "selected" : "" }, link, badge);
   }));
+}
+
+// The node named after "#" in the address; a fragment that does not decode names none.
+function nodeInAddress() {
+  try {
+    return decodeURIComponent(window.location.hash.slice(1));
+  } catch {
+    status("the address names no node (its # part does not decode)");
+    return "";
+  }
+}
+
+// Events of the open node. The server drops a stream that falls too far behind; the
+// browser reconnects, and the node is read again for whatever the gap held.
+function listen() {
+  const events = api.events();
+  let opened = 0;
+  events.onopen = () => { if (opened++ && page.node) openNode(page.node); };
+  events.onmessage = (message) => onEvent(parseJson(message.data));
 }
 
 async function main() {
   // The node named in the address loads while the config and the node list are fetched.
-  const wanted = decodeURIComponent(window.location.hash.slice(1));
+  const wanted = nodeInAddress();
   const loading = wanted ? api.node(wanted) : null;
+  loading?.catch(() => {});  // openNode reports it
   const config = await api.config();
   page.readOnly = config.read_only;
   document.getElementById("mode").hidden = !page.readOnly;
-  api.events().onmessage = (message) => onEvent(JSON.parse(message.data));
-  await Promise.all([refreshNodes(), wanted ? openNode(wanted, loading) : null]);
+  listen();
+  await Promise.all([
+    refreshNodes(),
+    wanted ? openNode(wanted, loading).catch((error) => status(`${wanted}: ${error.message}`)) : null,
+  ]);
   setInterval(refreshNodes, 1000);
   // Milliseconds from navigation to a usable page, after the first paint of the form.
   await new Promise((resolve) => requestAnimationFrame(() => setTimeout(resolve)));

@@ -1,6 +1,7 @@
 // A node's form: one section per namespace, one row per parameter, a fieldset per mapped group.
 // The page only types what the user enters as JSON; every rule is checked by the server
 // (the node's own checks, /api/check) and by the node.
+import { floatName, namedFloat, shownJson } from "./json.js";
 
 export function isArrayType(type) {
   return type.endsWith("_array");
@@ -30,21 +31,36 @@ function el(tag, attrs = {}, ...children) {
 }
 
 // The number the user typed, as typed: 2.5 stays 2.5 for an integer (the server refuses it).
+// nan, inf and -inf are the codec's names (json.js); a number too large for a double is not one.
 function numberOf(kind, text) {
   const trimmed = String(text).trim();
   if (trimmed === "") return new InputError("enter a number");
+  const named = namedFloat(trimmed);
+  if (named !== undefined) return named;
   const value = Number(trimmed);
-  if (!Number.isFinite(value)) return new InputError(`${JSON.stringify(trimmed)} is not a finite number`);
+  if (!Number.isFinite(value)) {
+    return new InputError(`${JSON.stringify(trimmed)} is not a number (nan, inf and -inf are)`);
+  }
   // An integer past 2^53 keeps its digits: JSON.rawJSON writes them as typed.
   if (/^-?\d+$/.test(trimmed) && !Number.isSafeInteger(value) && JSON.rawJSON) return JSON.rawJSON(trimmed);
   return value;
 }
 
+// A number as its box shows it: nan, inf and -inf by name.
+function numberText(value) {
+  return floatName(value) ?? String(value ?? "");
+}
+
+// A double's box is text, so that it can hold nan, inf and -inf; an int's is a number box.
+function numberInput(kind, value, step, attrs) {
+  if (kind === "double") return el("input", { type: "text", inputMode: "decimal", value: numberText(value), ...attrs });
+  return el("input", { type: "number", step, value: numberText(value), ...attrs });
+}
+
 function scalarInput(kind, value, attrs) {
   if (kind === "bool") return el("input", { type: "checkbox", checked: Boolean(value), ...attrs });
   if (kind === "string") return el("input", { type: "text", value: value ?? "", ...attrs });
-  const step = kind === "double" ? "any" : "1";
-  return el("input", { type: "number", step, value: value ?? "", ...attrs });
+  return numberInput(kind, value, "1", attrs);
 }
 
 function scalarValue(kind, input) {
@@ -84,20 +100,20 @@ function control(meta, name, value, disabled, onEdit, onDraft) {
   if (isArrayType(kind)) return arrayEditor(meta, name, value, disabled, onEdit);
   const id = `p-${name}`;
   if (meta.choices) {
+    const shown = (c) => (kind === "string" ? String(c) : numberText(c));
     const select = el("select", { id, "data-param": name, disabled },
-      ...meta.choices.map((c) => el("option", { value: String(c), text: String(c) })));
-    select.value = String(value);
+      ...meta.choices.map((c) => el("option", { value: shown(c), text: shown(c) })));
+    select.value = shown(value);
     const parse = (text) => (kind === "string" ? text : numberOf(kind, text));
     select.addEventListener("change", () => onEdit(name, parse(select.value)));
-    select.genparamsSet = (next) => { select.value = String(next); };
+    select.genparamsSet = (next) => { select.value = shown(next); };
     return select;
   }
   if ((kind === "int" || kind === "double") && meta.range) {
     const { min, max, step } = meta.range;
     const sliderStep = step > 0 ? step : kind === "int" ? 1 : (max - min) / 1000;
     const slider = el("input", { id, type: "range", min, max, step: sliderStep, value, disabled, "data-param": name });
-    const number = el("input", { type: "number", step: step > 0 ? step : kind === "int" ? 1 : "any",
-      value, disabled, "data-param-box": name });
+    const number = numberInput(kind, value, step > 0 ? step : 1, { disabled, "data-param-box": name });
     slider.addEventListener("input", () => { number.value = slider.value; });
     slider.addEventListener("change", () => onEdit(name, numberOf(kind, slider.value)));
     number.addEventListener("change", () => {
@@ -106,7 +122,7 @@ function control(meta, name, value, disabled, onEdit, onDraft) {
     });
     number.addEventListener("input", () => onDraft(name, numberOf(kind, number.value)));
     const pair = el("span", { class: "slider" }, slider, number);
-    slider.genparamsSet = (next) => { slider.value = next; number.value = next; };
+    slider.genparamsSet = (next) => { slider.value = next; number.value = numberText(next); };
     pair.genparamsControl = slider;
     return pair;
   }
@@ -114,7 +130,7 @@ function control(meta, name, value, disabled, onEdit, onDraft) {
   input.addEventListener("change", () => onEdit(name, scalarValue(kind, input)));
   if (kind !== "bool") input.addEventListener("input", () => onDraft(name, scalarValue(kind, input)));
   input.genparamsSet = (next) => {
-    if (kind === "bool") input.checked = Boolean(next); else input.value = next;
+    if (kind === "bool") input.checked = Boolean(next); else input.value = kind === "string" ? next : numberText(next);
   };
   return input;
 }
@@ -172,7 +188,7 @@ export function diffTable(rows) {
   return el("table", { class: "diff" },
     el("thead", {}, el("tr", {}, ...["parameter", "default", "current"].map((t) => el("th", { text: t })))),
     el("tbody", {}, ...rows.map(([name, def, cur]) => el("tr", { "data-diff": name },
-      el("td", { text: name }), el("td", { text: JSON.stringify(def) }), el("td", { text: JSON.stringify(cur) })))));
+      el("td", { text: name }), el("td", { text: shownJson(def) }), el("td", { text: shownJson(cur) })))));
 }
 
 export { el };

@@ -1,0 +1,43 @@
+"""Nodes that publish schema messages a tool must not trust, in a process of their own.
+
+``python -m tests.tune.hostile_schemas FILE`` reads a JSON list of
+``{"node": NAME, "topic": TOPIC, "text": TEXT}``, starts one node per entry that
+publishes TEXT, latched, on TOPIC (its own schema topic or another node's), and
+prints "ready".
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+
+import rclpy
+from rclpy.executors import MultiThreadedExecutor
+from rclpy.node import Node
+from std_msgs.msg import String
+
+from genparams.tune.graph import SCHEMA_QOS
+
+
+def main(argv: list[str]) -> int:
+    entries = json.loads(Path(argv[0]).read_text(encoding="utf-8"))
+    rclpy.init()
+    executor = MultiThreadedExecutor()
+    keep = []
+    for entry in entries:
+        node = Node(entry["node"])
+        publisher = node.create_publisher(String, entry["topic"], SCHEMA_QOS)
+        publisher.publish(String(data=entry["text"]))
+        keep.append(publisher)
+        executor.add_node(node)
+    print("ready", flush=True)
+    try:
+        executor.spin()
+    except (KeyboardInterrupt, rclpy.executors.ExternalShutdownException):
+        pass
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
