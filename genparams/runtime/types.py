@@ -11,11 +11,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
+from genparams.runtime.errors import GenparamsError
+
 INT64_MIN = -(2**63)
 INT64_MAX = 2**63 - 1
 
 
-class ValueTypeError(ValueError):
+class ValueTypeError(GenparamsError, ValueError):
     """A value does not have the parameter's type."""
 
 
