@@ -23,6 +23,7 @@ from genparams.commands import (
     tune,
     validate,
 )
+from genparams.errors import CommandError
 
 COMMANDS = (
     generate,
@@ -55,8 +56,13 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    """Run one command; its exit code. A ``CommandError`` is printed on stderr here, only here."""
     args = build_parser().parse_args(argv)
-    code: int = args.run(args)
+    try:
+        code: int = args.run(args)
+    except CommandError as error:
+        print(error, file=sys.stderr)
+        return error.exit_code
     return code
 
 

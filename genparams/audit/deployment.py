@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import Any
 
 from genparams.audit.findings import DRIFT_FILE, Finding
+from genparams.errors import GenparamsError
 from genparams.paramsfile.params_reader import ParamsDocument, read_params_file
 from genparams.paramsfile.ros_yaml import node_matches
 from genparams.runtime.values import same_value as runtime_same_value
@@ -14,7 +15,7 @@ from genparams.schema.errors import SchemaError
 from genparams.schema.input_file import read_input_file
 
 
-class DeploymentError(ValueError):
+class DeploymentError(GenparamsError, ValueError):
     """A params file that cannot be read: bad input, exit 2."""
 
 

@@ -5,6 +5,8 @@ from __future__ import annotations
 from dataclasses import asdict, dataclass
 from typing import Any
 
+from genparams.errors import render_problem
+
 VIOLATION = "violation"  # a value the schema forbids: exit 1
 DRIFT_DEFAULT = "drift-from-default"
 DRIFT_FILE = "drift-from-file"
@@ -27,12 +29,27 @@ class Finding:
     def failing(self) -> bool:
         return self.kind in (VIOLATION, UNREACHABLE, BAD_SCHEMA)
 
-    def text(self) -> str:
-        where = f"{self.node}: {self.parameter}" if self.parameter else self.node
-        values = ""
+    # A finding is a problem (genparams.errors.Problem): the node, the parameter, its kind.
+    @property
+    def place(self) -> str:
+        return self.node
+
+    @property
+    def key(self) -> str:
+        return self.parameter
+
+    @property
+    def rule(self) -> str:
+        return self.kind
+
+    @property
+    def message(self) -> str:
         if self.kind in (DRIFT_DEFAULT, DRIFT_FILE):
-            values = f" (expected {self.expected!r}, found {self.actual!r})"
-        return f"{where}: {self.detail}{values} [{self.kind}]"
+            return f"{self.detail} (expected {self.expected!r}, found {self.actual!r})"
+        return self.detail
+
+    def text(self) -> str:
+        return render_problem(self)
 
     def as_json(self) -> dict[str, Any]:
         return asdict(self)

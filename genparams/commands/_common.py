@@ -6,24 +6,26 @@ import sys
 from pathlib import Path
 
 from genparams.api import load_schema
+from genparams.errors import CommandError
 from genparams.integration.writing import write_all
 from genparams.runtime.visible import visible
 from genparams.schema.errors import SchemaError
 from genparams.schema.model import Schema
 
 
-def schema_or_none(path: Path) -> Schema | None:
-    """The schema, or None after printing every problem with it (the caller exits 2)."""
+def schema_from(path: Path) -> Schema:
+    """The schema; a ``CommandError`` (exit 2) listing every problem with it."""
     try:
         return load_schema(path)
     except SchemaError as exc:
-        print(exc, file=sys.stderr)
-        return None
+        raise CommandError(exc) from None
 
 
-def complain(message: str) -> None:
-    """Print an error on stderr; text from the user in it shows every character (visible)."""
-    print(visible(message), file=sys.stderr)
+def report(*lines: object) -> None:
+    """Lines of a command's report that are not its output (warnings, notes, a summary) on
+    stderr, every character shown; errors are raised as ``CommandError`` instead."""
+    for line in lines:
+        print(visible(str(line)), file=sys.stderr)
 
 
 def emit(text: str, output: Path | None) -> None:

@@ -5,7 +5,8 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from genparams.commands._common import complain, schema_or_none
+from genparams.commands._common import schema_from
+from genparams.errors import CommandError
 from genparams.paramsfile.check_params import Bound
 from genparams.runtime.naming import is_ros_token, join_prefix
 
@@ -32,23 +33,17 @@ def add_schema_arguments(parser: argparse.ArgumentParser) -> None:
     )
 
 
-def load_bounds(specs: list[tuple[Path, str]]) -> list[Bound] | None:
-    """The schemas, or None after printing what is wrong (the caller exits 2)."""
-    bounds = []
-    for path, prefix in specs:
-        schema = schema_or_none(path)
-        if schema is None:
-            return None
-        bounds.append(Bound(schema, prefix))
+def load_bounds(specs: list[tuple[Path, str]]) -> list[Bound]:
+    """The schemas; a ``CommandError`` (exit 2) saying what is wrong."""
+    bounds = [Bound(schema_from(path), prefix) for path, prefix in specs]
     prefixes = [b.prefix for b in bounds]
     for bound in bounds:
         for other in bounds:
             if other is not bound and _overlap(bound, other):
-                complain(
+                raise CommandError(
                     f"genparams: {bound.schema.source_name} and {other.schema.source_name} "
                     f"both declare {_overlap(bound, other)} (prefixes {prefixes})"
                 )
-                return None
     return bounds
 
 

@@ -6,6 +6,7 @@ import argparse
 import sys
 from pathlib import Path
 
+from genparams.errors import CommandError
 from genparams.paramsfile.ros_yaml import absolute, node_name_problem
 
 
@@ -53,8 +54,7 @@ def run(args: argparse.Namespace) -> int:
     for node in args.nodes:
         problem = node_name_problem(absolute(node))
         if problem is not None:
-            print(f"genparams audit: invalid node {node!r}: {problem}", file=sys.stderr)
-            return 2
+            raise CommandError(f"genparams audit: invalid node {node!r}: {problem}")
     from genparams.audit.deployment import DeploymentError, read_deployment
     from genparams.audit.report import json_report, text_report
     from genparams.audit.walk import audit
@@ -63,8 +63,7 @@ def run(args: argparse.Namespace) -> int:
     try:
         documents = read_deployment(args.params_file)
     except DeploymentError as exc:  # its problems name their file and place
-        print(exc, file=sys.stderr)
-        return 2
+        raise CommandError(exc) from None
     graph = Graph("genparams_audit")
     try:
         only = tuple(absolute(n) for n in args.nodes)

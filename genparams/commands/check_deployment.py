@@ -3,11 +3,11 @@
 from __future__ import annotations
 
 import argparse
-import sys
 from pathlib import Path
 
-from genparams.commands._common import complain, schema_or_none
+from genparams.commands._common import schema_from
 from genparams.commands.check_params import add_known_argument
+from genparams.errors import CommandError
 from genparams.paramsfile.check_params import Bound
 from genparams.paramsfile.deployment import Deployed, check_deployment
 from genparams.paramsfile.manifest import Manifest, NodeEntry, parse_map, read_manifest
@@ -41,18 +41,14 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 
 def run(args: argparse.Namespace) -> int:
     manifest = _manifest(args)
-    if manifest is None:
-        return 2
     deployed = deployed_schemas(manifest)
-    if deployed is None:
-        return 2
     code = 0
+    unreadable: list[SchemaError] = []  # the other files are still checked
     for params in args.params:
         try:
             text = read_input_file(params, "params file")
         except SchemaError as exc:
-            print(exc, file=sys.stderr)
-            code = 2
+            unreadable.append(exc)
             continue
         document = read_params_file(text, str(params))
         report, checked = check_deployment(deployed, document, (*manifest.known, *args.known))
@@ -62,46 +58,40 @@ def run(args: argparse.Namespace) -> int:
             for note in checked:
                 print(visible(f"{params}: {note}"))
         if report.problems:
-            code = max(code, 1)
+            code = 1
+    if unreadable:
+        raise CommandError(*unreadable)
     return code
 
 
-def _manifest(args: argparse.Namespace) -> Manifest | None:
+def _manifest(args: argparse.Namespace) -> Manifest:
     entries: list[NodeEntry] = []
     known: tuple[str, ...] = ()
     if args.manifest is not None:
         try:
             manifest = read_manifest(args.manifest)
         except SchemaError as exc:
-            print(exc, file=sys.stderr)
-            return None
+            raise CommandError(exc) from None
         entries.extend(manifest.nodes)
         known = manifest.known
     for text in args.map:
         try:
             entries.append(parse_map(text))
         except ValueError as exc:
-            complain(f"genparams check-deployment: --map: {exc}")
-            return None
+            raise CommandError(f"genparams check-deployment: --map: {exc}") from None
     if not entries:
-        print(
-            "genparams check-deployment: give --manifest FILE or --map NODE=SCHEMA", file=sys.stderr
-        )
-        return None
+        raise CommandError("genparams check-deployment: give --manifest FILE or --map NODE=SCHEMA")
     return Manifest(tuple(entries), known)
 
 
-def deployed_schemas(manifest: Manifest) -> list[Deployed] | None:
+def deployed_schemas(manifest: Manifest) -> list[Deployed]:
     cache: dict[Path, Schema] = {}
     deployed = []
     for entry in manifest.nodes:
         bounds = []
         for ref in entry.schemas:
             if ref.path not in cache:
-                schema = schema_or_none(ref.path)
-                if schema is None:
-                    return None
-                cache[ref.path] = schema
+                cache[ref.path] = schema_from(ref.path)
             bounds.append(Bound(cache[ref.path], ref.prefix))
         deployed.append(Deployed(entry, tuple(bounds)))
     return deployed

@@ -3,11 +3,10 @@
 from __future__ import annotations
 
 import argparse
-import sys
 from pathlib import Path
 
-from genparams.commands._common import complain
 from genparams.commands._schemas import add_schema_arguments, bound_spec, load_bounds
+from genparams.errors import CommandError
 from genparams.paramsfile.check_params import check_files
 from genparams.paramsfile.params_reader import read_params_file
 from genparams.paramsfile.ros_yaml import absolute, node_name_problem
@@ -54,18 +53,15 @@ def run(args: argparse.Namespace) -> int:
     for node in args.node:
         problem = node_name_problem(node)
         if problem is not None:
-            complain(f"genparams check-params: invalid --node {node!r}: {problem}")
-            return 2
+            raise CommandError(f"genparams check-params: invalid --node {node!r}: {problem}")
     bounds = load_bounds([args.schema, *args.also])
-    if bounds is None:
-        return 2
     code = 0
+    unreadable: list[SchemaError] = []  # the other files are still checked
     for params in args.params:
         try:
             text = read_input_file(params, "params file")
         except SchemaError as exc:
-            print(exc, file=sys.stderr)
-            code = 2
+            unreadable.append(exc)
             continue
         document = read_params_file(text, str(params))
         report = check_files(bounds, [document], [absolute(n) for n in args.node], args.known)
@@ -75,5 +71,7 @@ def run(args: argparse.Namespace) -> int:
             for line in report.skipped:
                 print(line)
         if report.problems:
-            code = max(code, 1)
+            code = 1
+    if unreadable:
+        raise CommandError(*unreadable)
     return code

@@ -5,8 +5,9 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from genparams.commands._common import complain, emit
+from genparams.commands._common import emit
 from genparams.commands._schemas import add_schema_arguments, bound_spec, load_bounds
+from genparams.errors import CommandError
 from genparams.outputs.params_file import NodeNameError, default_params_file
 from genparams.outputs.render import render_params_file
 from genparams.schema.combine import combined_schema
@@ -29,13 +30,10 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 
 def run(args: argparse.Namespace) -> int:
     bounds = load_bounds([args.schema, *args.also])
-    if bounds is None:
-        return 2
     schema = combined_schema([(b.schema, b.prefix) for b in bounds])
     try:
         params_file = default_params_file(schema, args.node)
     except NodeNameError as exc:
-        complain(f"genparams defaults: {exc}")
-        return 2
+        raise CommandError(f"genparams defaults: {exc}") from None
     emit(render_params_file(params_file), args.output)
     return 0

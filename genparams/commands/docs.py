@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from genparams.commands._common import emit, schema_or_none
+from genparams.commands._common import emit, schema_from
 from genparams.outputs.docs_model import FORMATS, docs_page
 from genparams.outputs.render import render_docs
 
@@ -19,8 +19,6 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 
 
 def run(args: argparse.Namespace) -> int:
-    schema = schema_or_none(args.schema)
-    if schema is None:
-        return 2
+    schema = schema_from(args.schema)
     emit(render_docs(docs_page(schema), args.format), args.output)
     return 0

@@ -3,13 +3,13 @@
 from __future__ import annotations
 
 import argparse
-import sys
 from pathlib import Path
 from typing import Any
 
-from genparams.commands._common import complain, emit
+from genparams.commands._common import emit
 from genparams.commands._schemas import add_schema_arguments, load_bounds
 from genparams.commands.check_params import add_known_argument
+from genparams.errors import CommandError
 from genparams.outputs.explain_text import text_report, yaml_report
 from genparams.paramsfile.explain import RuleError, explain, overrides_document
 from genparams.paramsfile.manifest import read_manifest
@@ -51,16 +51,14 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 def run(args: argparse.Namespace) -> int:
     problem = node_name_problem(args.node)
     if problem is not None:
-        complain(f"genparams explain: invalid node {args.node!r}: {problem}")
-        return 2
+        raise CommandError(f"genparams explain: invalid node {args.node!r}: {problem}")
     node = absolute(args.node)
     specs, known = list(args.also), list(args.known)
     if args.manifest is not None:
         try:
             manifest = read_manifest(args.manifest)
         except SchemaError as exc:
-            print(exc, file=sys.stderr)
-            return 2
+            raise CommandError(exc) from None
         known += manifest.known
         for entry in manifest.nodes:
             if node_matches(entry.node, node):
@@ -68,18 +66,14 @@ def run(args: argparse.Namespace) -> int:
                 known += entry.known
                 break
     bounds = load_bounds(specs)
-    if bounds is None:
-        return 2
     documents = _documents(args.inputs)
-    if documents is None:
-        return 2
     explanation = explain(bounds, documents, node, known)
     text = yaml_report(explanation) if args.format == "yaml" else text_report(explanation)
     emit(text, args.output)
     return 1 if explanation.report.problems else 0
 
 
-def _documents(inputs: list[tuple[str, str]]) -> list[ParamsDocument] | None:
+def _documents(inputs: list[tuple[str, str]]) -> list[ParamsDocument]:
     documents: list[ParamsDocument] = []
     rules = 0
     for kind, value in inputs:
@@ -88,13 +82,11 @@ def _documents(inputs: list[tuple[str, str]]) -> list[ParamsDocument] | None:
             try:
                 documents.append(overrides_document([value], start=rules))
             except RuleError as exc:
-                complain(f"genparams explain: {exc}")
-                return None
+                raise CommandError(f"genparams explain: {exc}") from None
             continue
         try:
             text = read_input_file(value, "params file")
         except SchemaError as exc:
-            print(exc, file=sys.stderr)
-            return None
+            raise CommandError(exc) from None
         documents.append(read_params_file(text, value))
     return documents

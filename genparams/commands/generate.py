@@ -12,6 +12,7 @@ import sys
 from pathlib import Path
 
 from genparams.api import load_schema
+from genparams.errors import CommandError
 from genparams.integration.project_config import (
     ProjectConfigError,
     find_pyproject,
@@ -50,8 +51,6 @@ def run(args: argparse.Namespace) -> int:
         jobs = _jobs_from_arguments(args)
     else:
         jobs = _jobs_from_pyproject(args)
-    if isinstance(jobs, int):
-        return jobs
     problems: list[SchemaProblem] = []
     texts: dict[Path, str] = {}
     for schema_path, target in jobs:
@@ -62,12 +61,10 @@ def run(args: argparse.Namespace) -> int:
             continue
         texts[target or (args.out_dir / f"{schema.module_name}.py")] = render_module(schema)
     if problems:
-        print(SchemaError(problems), file=sys.stderr)
-        return 2
+        raise CommandError(SchemaError(problems))
     if STDOUT in texts:
         if args.check:
-            print("genparams generate --check needs -o or --out-dir", file=sys.stderr)
-            return 2
+            raise CommandError("genparams generate --check needs -o or --out-dir")
         sys.stdout.write(texts[STDOUT])
         return 0
     if args.check:
@@ -82,10 +79,9 @@ def run(args: argparse.Namespace) -> int:
 Job = tuple[Path, Path | None]  # schema, output (None: <out-dir>/<module name>.py)
 
 
-def _jobs_from_arguments(args: argparse.Namespace) -> list[Job] | int:
+def _jobs_from_arguments(args: argparse.Namespace) -> list[Job]:
     if args.output is not None and len(args.schemas) > 1:
-        print("genparams generate: -o takes one schema; use --out-dir for several", file=sys.stderr)
-        return 2
+        raise CommandError("genparams generate: -o takes one schema; use --out-dir for several")
     if args.output is not None:
         return [(args.schemas[0], args.output)]
     if args.out_dir is not None:
@@ -93,27 +89,22 @@ def _jobs_from_arguments(args: argparse.Namespace) -> list[Job] | int:
     return [(schema, STDOUT) for schema in args.schemas]
 
 
-def _jobs_from_pyproject(args: argparse.Namespace) -> list[Job] | int:
+def _jobs_from_pyproject(args: argparse.Namespace) -> list[Job]:
     if args.output is not None or args.out_dir is not None:
-        print(
+        raise CommandError(
             "genparams generate: -o and --out-dir need SCHEMA arguments; "
-            "without them, outputs come from [tool.genparams] in pyproject.toml",
-            file=sys.stderr,
+            "without them, outputs come from [tool.genparams] in pyproject.toml"
         )
-        return 2
     pyproject = find_pyproject(Path.cwd())
     if pyproject is None:
-        print(
+        raise CommandError(
             "genparams generate: no SCHEMA given and no pyproject.toml in this folder "
-            "or its parents to read [tool.genparams] from",
-            file=sys.stderr,
+            "or its parents to read [tool.genparams] from"
         )
-        return 2
     try:
         config = load_project_config(pyproject)
     except ProjectConfigError as exc:
-        print(exc, file=sys.stderr)
-        return 2
+        raise CommandError(exc) from None
     return [(_shown(m.schema), _shown(m.output)) for m in config.modules]
 
 

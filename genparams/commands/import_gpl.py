@@ -7,7 +7,8 @@ import sys
 from pathlib import Path
 
 from genparams.api import load_schema
-from genparams.commands._common import complain
+from genparams.commands._common import report
+from genparams.errors import CommandError
 from genparams.gpl.convert import GplError, Imported, import_gpl
 from genparams.gpl.emit import schema_text, stub_text
 from genparams.integration.writing import write_all
@@ -54,16 +55,12 @@ def run(args: argparse.Namespace) -> int:
         )
         imported = import_gpl(document, args.checks_module, args.adopt)
     except SchemaError as exc:
-        print(exc, file=sys.stderr)
-        return 2
+        raise CommandError(exc) from None
     except GplError as exc:
-        complain(f"{file}:1:1: {exc}")
-        return 2
+        raise CommandError(f"{file}:1:1: {exc}") from None
     module = args.checks_module or f"{imported.name}_checks"
     if imported.errors:
-        for problem in sorted([*imported.errors, *imported.warnings]):
-            print(problem, file=sys.stderr)
-        return 2
+        raise CommandError(*map(str, sorted([*imported.errors, *imported.warnings])))
     text = schema_text(imported, args.gpl_file.name)
     target = args.output
     if args.out_dir is not None:
@@ -72,11 +69,11 @@ def run(args: argparse.Namespace) -> int:
         # Lines of its errors are lines of the schema text, which is not written.
         load_schema(f"<schema imported from {args.gpl_file.name}, not written>", text)
     except SchemaError as exc:
-        for problem in sorted(imported.warnings):
-            print(problem, file=sys.stderr)
-        print(exc, file=sys.stderr)
-        complain(f"genparams import-gpl: {file}: the imported schema is not valid")
-        return 2
+        raise CommandError(
+            *map(str, sorted(imported.warnings)),
+            exc,
+            f"genparams import-gpl: {file}: the imported schema is not valid",
+        ) from None
     outputs: dict[Path, str] = {}
     if target is not None:
         outputs[target] = text
@@ -91,16 +88,14 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _report(imported: Imported, module: str, outputs: dict[Path, str]) -> None:
-    for problem in sorted([*imported.warnings, *imported.notes]):
-        print(problem, file=sys.stderr)
+    report(*sorted([*imported.warnings, *imported.notes]))
     if imported.customs:
         stub = next((p for p in outputs if p.suffix == ".py"), None)
         where = f"stubs in {stub}" if stub else "write them in Python"
         names = ", ".join(sorted(imported.customs))
-        complain(f"custom validators to implement in {module} ({where}): {names}")
+        report(f"custom validators to implement in {module} ({where}): {names}")
     lost = imported.parameters - imported.imported
-    print(
+    report(
         f"imported {imported.imported} of {imported.parameters} parameters"
-        + (f"; {lost} left out (see warnings)" if lost else ""),
-        file=sys.stderr,
+        + (f"; {lost} left out (see warnings)" if lost else "")
     )

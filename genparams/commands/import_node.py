@@ -6,6 +6,8 @@ import argparse
 import sys
 from pathlib import Path
 
+from genparams.commands._common import report
+from genparams.errors import CommandError
 from genparams.paramsfile.ros_yaml import absolute, node_name_problem
 
 
@@ -31,8 +33,7 @@ def run(args: argparse.Namespace) -> int:
     node = absolute(args.node)
     problem = node_name_problem(node)
     if problem is not None:
-        print(f"genparams import-node: invalid node {args.node!r}: {problem}", file=sys.stderr)
-        return 2
+        raise CommandError(f"genparams import-node: invalid node {args.node!r}: {problem}")
     from genparams.api import load_schema
     from genparams.import_node.convert import import_node
     from genparams.import_node.read import read_node
@@ -43,8 +44,7 @@ def run(args: argparse.Namespace) -> int:
     try:
         imported = import_node(node, read_node(node, args.timeout), args.name)
     except TimeoutError as exc:
-        print(f"genparams import-node: {exc}", file=sys.stderr)
-        return 2
+        raise CommandError(f"genparams import-node: {exc}") from None
     header = (
         f"# genparams schema read from the running node {node} by `genparams import-node`.\n"
         "# Its values at that moment are the defaults. Edit freely: this file is now the source.\n"
@@ -53,16 +53,14 @@ def run(args: argparse.Namespace) -> int:
     try:  # the result must be a schema genparams accepts, or nothing is written
         load_schema(f"<schema read from {node}, not written>", text)
     except SchemaError as exc:
-        print(exc, file=sys.stderr)
-        print(f"genparams import-node: {node}: the schema read is not valid", file=sys.stderr)
-        return 2
-    for line in [*imported.notes, *imported.warnings]:
-        print(line, file=sys.stderr)
+        raise CommandError(
+            exc, f"genparams import-node: {node}: the schema read is not valid"
+        ) from None
+    report(*imported.notes, *imported.warnings)
     lost = imported.parameters - imported.imported
-    print(
+    report(
         f"imported {imported.imported} of {imported.parameters} parameters"
-        + (f"; {lost} left out (see warnings)" if lost else ""),
-        file=sys.stderr,
+        + (f"; {lost} left out (see warnings)" if lost else "")
     )
     if args.output is None:
         sys.stdout.write(text)

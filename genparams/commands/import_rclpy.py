@@ -7,6 +7,8 @@ import sys
 from pathlib import Path
 
 from genparams.api import load_schema
+from genparams.commands._common import report
+from genparams.errors import CommandError
 from genparams.integration.writing import write_all
 from genparams.outputs.schema_yaml import schema_yaml
 from genparams.rclpy_import.convert import APPROXIMATE, LEFT_OUT, Imported
@@ -43,31 +45,29 @@ def run(args: argparse.Namespace) -> int:
     file = str(args.source)
     try:
         if args.source.stat().st_size > MAX_BYTES:
-            print(f"{file}:1:1: file is larger than {MAX_BYTES} bytes", file=sys.stderr)
-            return 2
+            raise CommandError(f"{file}:1:1: file is larger than {MAX_BYTES} bytes")
         text = args.source.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as exc:
-        print(f"{file}:1:1: cannot read: {exc}", file=sys.stderr)
-        return 2
+        raise CommandError(f"{file}:1:1: cannot read: {exc}") from None
     try:
         node = import_node(text, file, args.class_name)
     except NodeFileError as exc:
-        print(exc, file=sys.stderr)
-        return 2
+        raise CommandError(exc) from None
     imported = node.imported
     if not imported.imported_names:
         _report(imported)
-        print(f"genparams import-rclpy: {file}: no parameter could be imported: nothing written",
-              file=sys.stderr)  # fmt: skip
-        return 1
+        raise CommandError(
+            f"genparams import-rclpy: {file}: no parameter could be imported: nothing written",
+            exit_code=1,
+        )
     schema = _header(args.source.name, node.unit_name) + schema_yaml(imported.data)
     try:  # the result must be a schema genparams accepts, or nothing is written
         load_schema(args.output or f"<{imported.name}>", schema)
     except SchemaError as exc:
         _report(imported)
-        print(exc, file=sys.stderr)
-        print(f"genparams import-rclpy: {file}: the imported schema is not valid", file=sys.stderr)
-        return 2
+        raise CommandError(
+            exc, f"genparams import-rclpy: {file}: the imported schema is not valid"
+        ) from None
     diff = patch_diff(node, file) if args.patch else None
     _report(imported)
     if args.output is not None:
@@ -75,11 +75,10 @@ def run(args: argparse.Namespace) -> int:
     elif diff is None:
         sys.stdout.write(schema)
     else:
-        print("the schema is not written without -o SCHEMA", file=sys.stderr)
+        report("the schema is not written without -o SCHEMA")
     if diff is not None:
         if not diff:
-            print("the patch changes nothing: only declarations on self in a class are rewritten",
-                  file=sys.stderr)  # fmt: skip
+            report("the patch changes nothing: only declarations on self in a class are rewritten")
         sys.stdout.write(diff)
     return 1 if imported.warnings else 0
 
@@ -93,14 +92,12 @@ def _header(source: str, unit_name: str) -> str:
 
 
 def _report(imported: Imported) -> None:
-    for problem in sorted([*imported.warnings, *imported.notes]):
-        print(problem, file=sys.stderr)
+    report(*sorted([*imported.warnings, *imported.notes]))
     total = len(imported.outcome)
     lost = imported.count(LEFT_OUT)
     approximate = imported.count(APPROXIMATE)
-    print(
+    report(
         f"imported {total - lost} of {total} parameters"
         + (f" ({approximate} approximately)" if approximate else "")
-        + (f"; {lost} left out (see warnings)" if lost else ""),
-        file=sys.stderr,
+        + (f"; {lost} left out (see warnings)" if lost else "")
     )

@@ -29,8 +29,6 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 
 def run(args: argparse.Namespace) -> int:
     bounds = load_bounds([args.schema, *args.also])
-    if bounds is None:
-        return 2
     schema = combined_schema([(b.schema, b.prefix) for b in bounds])
     document = params_file_schema(schema, partial=args.partial)
     emit(dumps(document, indent=2, ensure_ascii=False) + "\n", args.output)

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import argparse
 import os
-import sys
 
+from genparams.errors import CommandError
 from genparams.paramsfile.ros_yaml import absolute, node_name_problem
 
 # The page's web stack comes with the tune extra; a plain `pip install genparams` leaves it out.
@@ -60,23 +60,19 @@ def run(args: argparse.Namespace) -> int:
     except ModuleNotFoundError as exc:
         if (exc.name or "").partition(".")[0] not in WEB_STACK:
             raise
-        print(
+        raise CommandError(
             f"genparams tune: the tuning page needs the tune extra ({' and '.join(WEB_STACK)}):"
-            f" {INSTALL_HINT}",
-            file=sys.stderr,
-        )
-        return 2
+            f" {INSTALL_HINT}"
+        ) from None
     for node in args.nodes:
         problem = node_name_problem(absolute(node))
         if problem is not None:
-            print(f"genparams tune: invalid node {node!r}: {problem}", file=sys.stderr)
-            return 2
+            raise CommandError(f"genparams tune: invalid node {node!r}: {problem}")
     from genparams.tune.security import token_problem
 
     token = args.token or os.environ.get(TOKEN_VARIABLE) or None
     if token is not None and (problem := token_problem(token)) is not None:
-        print(f"genparams tune: invalid token: {problem}", file=sys.stderr)
-        return 2
+        raise CommandError(f"genparams tune: invalid token: {problem}")
     server = TuneServer(
         args.host,
         args.port,
@@ -92,8 +88,7 @@ def run(args: argparse.Namespace) -> int:
     except KeyboardInterrupt:
         pass
     except (OSError, RuntimeError) as exc:
-        print(f"genparams tune: {exc}", file=sys.stderr)
-        return 2
+        raise CommandError(f"genparams tune: {exc}") from None
     finally:
         server.stop()
     return 0

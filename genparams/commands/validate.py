@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 import argparse
-import sys
 from pathlib import Path
 
 from genparams.api import load_schema
+from genparams.errors import CommandError
 from genparams.schema.errors import SchemaError, SchemaProblem
 
 
@@ -24,6 +24,5 @@ def run(args: argparse.Namespace) -> int:
         except SchemaError as exc:
             problems.extend(exc.problems)
     if problems:
-        print(SchemaError(problems), file=sys.stderr)
-        return 2
+        raise CommandError(SchemaError(problems))
     return 0

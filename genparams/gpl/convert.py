@@ -13,6 +13,7 @@ from collections.abc import Collection
 from dataclasses import dataclass, field
 from typing import Any
 
+from genparams.errors import GenparamsError
 from genparams.gpl.validation import Translated, descriptor_range, element_bounds, translate
 from genparams.runtime.types import TYPES, ValueTypeError
 from genparams.runtime.validator_kinds import KINDS, ValidatorArgumentError, build_validator
@@ -26,7 +27,7 @@ _LEAF_KEYS = ("type", "default_value", "description", "read_only", "validation",
               "additional_constraints")  # fmt: skip
 
 
-class GplError(Exception):
+class GplError(GenparamsError):
     """The file is not a GPL parameter file at all."""
 
 

@@ -20,11 +20,13 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from genparams.errors import GenparamsError
+
 PYPROJECT = "pyproject.toml"
 _MODULE_KEYS = ("schema", "output")
 
 
-class ProjectConfigError(Exception):
+class ProjectConfigError(GenparamsError):
     """A missing or malformed ``[tool.genparams]`` table; the message names file and key."""
 
 

@@ -17,6 +17,7 @@ import math
 from dataclasses import dataclass, replace
 
 from genparams import __version__
+from genparams.errors import GenparamsError
 from genparams.outputs.yaml_text import (
     comment_lines,
     double_text,
@@ -31,7 +32,7 @@ ALL_NODES = "/**"
 _STEP = "  "
 
 
-class NodeNameError(ValueError):
+class NodeNameError(GenparamsError, ValueError):
     """A --node argument that ROS would refuse as a params-file section name."""
 
 

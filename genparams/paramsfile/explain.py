@@ -15,6 +15,7 @@ from typing import Any
 
 import yaml
 
+from genparams.errors import GenparamsError
 from genparams.paramsfile.check_params import (
     BUILTIN_PARAMETERS,
     BUILTIN_PREFIXES,
@@ -87,7 +88,7 @@ def overrides_document(rules: Sequence[str], start: int = 1) -> ParamsDocument:
     return ParamsDocument(OVERRIDE_FILE, sections, ())
 
 
-class RuleError(ValueError):
+class RuleError(GenparamsError, ValueError):
     """A -p rule rcl would refuse."""
 
 

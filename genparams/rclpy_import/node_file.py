@@ -6,12 +6,13 @@ import ast
 from dataclasses import dataclass
 from pathlib import Path
 
+from genparams.errors import GenparamsError
 from genparams.rclpy_import.convert import Imported, convert, schema_name
 from genparams.rclpy_import.features import awaiting_feature
 from genparams.rclpy_import.scan import Unit, units
 
 
-class NodeFileError(Exception):
+class NodeFileError(GenparamsError):
     """The file cannot be imported at all (message: FILE:LINE:COL: what)."""
 
 

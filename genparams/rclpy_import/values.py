@@ -16,6 +16,8 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
 
+from genparams.errors import GenparamsError
+
 # rclpy's Parameter.Type members (and rcl_interfaces' ParameterType constants) -> schema types.
 ROS_TYPES = {
     "BOOL": "bool",
@@ -64,7 +66,7 @@ RCLPY_ENUMS = {
 _MAX_DEPTH = 32  # constants defined through constants, never in a loop
 
 
-class UntranslatableError(Exception):
+class UntranslatableError(GenparamsError):
     """A construct the import cannot turn into a value; ``what`` names it for a warning."""
 
     def __init__(self, node: ast.AST, what: str) -> None:

@@ -44,6 +44,7 @@ from rclpy.exceptions import ParameterImmutableException
 from rclpy.parameter import Parameter
 
 from genparams.runtime import rclpy_internals as internals
+from genparams.runtime.errors import GenparamsError
 
 if TYPE_CHECKING:
     from rclpy.node import Node
@@ -56,7 +57,7 @@ _INSTALLING = threading.Lock()
 _ACCEPTED = SetParametersResult(successful=True)
 
 
-class UndeclareRefusedError(ParameterImmutableException):
+class UndeclareRefusedError(ParameterImmutableException, GenparamsError):
     """``node.undeclare_parameter`` of a parameter a genparams class declares.
 
     A ParameterImmutableException, as rclpy raises for a read-only parameter, so

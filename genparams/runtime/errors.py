@@ -1,11 +1,15 @@
-"""Runtime errors."""
+"""Runtime errors, and ``GenparamsError``, the base of every error genparams raises."""
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 
 
-class ParameterDeclarationError(Exception):
+class GenparamsError(Exception):
+    """The base of every error genparams raises (the runtime's and the compiler's)."""
+
+
+class ParameterDeclarationError(GenparamsError):
     """A node's parameters cannot be declared: every problem is listed, nothing was declared."""
 
     def __init__(
@@ -19,11 +23,11 @@ class ParameterDeclarationError(Exception):
         super().__init__("\n".join(lines))
 
 
-class DetachedSnapshotError(RuntimeError):
+class DetachedSnapshotError(GenparamsError, RuntimeError):
     """A snapshot or ``defaults()`` value was asked to do something only a declared view can."""
 
 
-class RemoteParameterError(RuntimeError):
+class RemoteParameterError(GenparamsError, RuntimeError):
     """Another node's parameters could not be read as the schema says they are."""
 
 

@@ -25,6 +25,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
+from genparams.runtime.errors import GenparamsError
 from genparams.runtime.expression_words import (
     ARITHMETIC,
     ARRAYS,
@@ -45,7 +46,7 @@ Values = Mapping[str, Any]
 Evaluator = Callable[[Values], Any]
 
 
-class RuleError(ValueError):
+class RuleError(GenparamsError, ValueError):
     """A rule's check is not a valid expression of the language; ``offset`` is 0-based."""
 
     def __init__(self, message: str, offset: int | None = None) -> None:

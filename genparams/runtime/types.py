@@ -27,11 +27,13 @@ RosValue: TypeAlias = (
 )
 """The typed-view value of a parameter of type ``any``: any of the nine types' values."""
 
+from genparams.runtime.errors import GenparamsError
+
 INT64_MIN = -(2**63)
 INT64_MAX = 2**63 - 1
 
 
-class ValueTypeError(ValueError):
+class ValueTypeError(GenparamsError, ValueError):
     """A value does not have the parameter's type."""
 
 

@@ -15,6 +15,7 @@ from typing import Any
 
 import regex as regex_engine
 
+from genparams.runtime.errors import GenparamsError
 from genparams.runtime.types import INT64_MAX, INT64_MIN
 from genparams.runtime.validators import (
     ALL_TYPES,
@@ -46,7 +47,7 @@ class ValidatorKind:
     takes_argument: bool = True
 
 
-class ValidatorArgumentError(ValueError):
+class ValidatorArgumentError(GenparamsError, ValueError):
     pass
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass
 
-from genparams.runtime.visible import visible
+from genparams.errors import GenparamsError, render_problem
 
 
 @dataclass(frozen=True, order=True)
@@ -24,12 +24,17 @@ class SchemaProblem:
     key: str  # dotted path in the document, "" for the document itself
     message: str
 
+    rule = ""  # a schema problem's message names its rule
+
+    @property
+    def place(self) -> str:
+        return str(self.location)
+
     def __str__(self) -> str:
-        key = f" {self.key}:" if self.key else ""
-        return visible(f"{self.location}:{key} {self.message}")  # one line, every char shown
+        return render_problem(self)  # one line, every char shown
 
 
-class SchemaError(Exception):
+class SchemaError(GenparamsError):
     """One or more problems in a schema file; all are reported at once."""
 
     def __init__(self, problems: Iterable[SchemaProblem]) -> None:

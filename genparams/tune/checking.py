@@ -34,6 +34,7 @@ from rcl_interfaces.msg import FloatingPointRange, IntegerRange, ParameterDescri
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
+from genparams.errors import GenparamsError
 from genparams.runtime.binding import check_each
 from genparams.runtime.naming import ENTRY_KEY, join_prefix
 from genparams.runtime.rclpy_internals import descriptor_check, undeclared_check
@@ -44,7 +45,7 @@ from genparams.runtime.types import TYPES
 from genparams.runtime.validators import Custom, Validator
 
 
-class SchemaMessageError(ValueError):
+class SchemaMessageError(GenparamsError, ValueError):
     """A schema message this checker cannot compile."""
 
 
