@@ -48,6 +48,14 @@ def check_maps(
     for group, doc_path in mapped:
         where = (*doc_path, "for_each")
         target = group.mapped_over
+        if target == naming.OVERRIDE_KEYS:
+            if naming.FROM_OVERRIDES in fixed:
+                report(
+                    where,
+                    f"for_each: {naming.FROM_OVERRIDES} takes the keys from the overrides, "
+                    f"but the schema also has a parameter {naming.FROM_OVERRIDES!r}: rename it",
+                )
+            continue
         param = fixed.get(target)
         if param is None:
             if not unbuilt(target):
