@@ -125,7 +125,7 @@ def _map_schema(group: Group) -> dict[str, Any]:
         patterns[dotted_pattern((ENTRY_KEY, *path))] = {"$ref": _ref(item, path)}
     return {
         "type": "object",
-        "description": f"One entry per item of {group.mapped_over}.",
+        "description": f"One entry per {group.keyed_by}.",
         "patternProperties": patterns,
         "additionalProperties": False,
     }
@@ -173,9 +173,7 @@ def _group_schema(group: Group, old_names: _OldNames, *, required: bool) -> dict
         "additionalProperties": False,
     }
     if group.mapped_over:
-        result["description"] = (
-            f"One entry of {group.ros_name}, for an item of {group.mapped_over}."
-        )
+        result["description"] = f"One entry of {group.ros_name}, for a {group.keyed_by}."
     if patterns:
         result["patternProperties"] = patterns
     if required_here:
