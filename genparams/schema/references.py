@@ -125,6 +125,11 @@ def _missing_target(
 ) -> str:
     if not naming.is_ros_name(target):
         return f"for_each must be a dotted parameter name, got {target!r}"
+    if target == naming.FROM_OVERRIDES:
+        return (
+            "for_each: overrides keys the entries of a namespace; a parameter with for_each "
+            "needs a string_array parameter naming its items"
+        )
     parts = tuple(target.split("."))
     for path, name in map_paths:
         if _inside(parts, path) and len(parts) > len(path):
