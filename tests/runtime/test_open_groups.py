@@ -165,3 +165,16 @@ def test_defaults_take_the_keys_given(module: types.ModuleType) -> None:
     assert list(built.sensors) == ["imu"] and built.sensors["imu"].rate == 30.0
     with pytest.raises(ParameterDeclarationError, match=r"sensors\.gps\.topic"):
         module.OpenGroupsParams.defaults({"sensors": {"gps": {"rate": 5.0}}})
+
+
+def test_remote_reads_the_entries_declared(
+    ros: RosHarness, module: types.ModuleType, tmp_path: Path
+) -> None:
+    target = ros.node(args=params_file(tmp_path))
+    cfg = module.OpenGroupsParams.declare(target)
+    remote = module.OpenGroupsParams.remote(ros.node(), target.get_fully_qualified_name())
+    assert remote.wait_for_services(timeout_sec=10.0)
+    snapshot = ros.wait(remote.get())
+    assert snapshot == cfg.snapshot() and list(snapshot.sensors) == ["front", "rear"]
+    assert ros.wait(remote.set({"sensors.front.rate": 60.0})) is None
+    assert cfg.sensors["front"].rate == 60.0
