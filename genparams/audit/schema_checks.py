@@ -7,11 +7,12 @@ evaluates (``compile_rule``), without the schema file.
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterable, Iterator, Mapping
 from typing import Any
 
 from genparams.audit.findings import DRIFT_DEFAULT, NOT_CHECKED, VIOLATION, Finding
-from genparams.runtime.naming import strip_prefix
+from genparams.runtime.entries import keys_under
+from genparams.runtime.naming import OVERRIDE_KEYS, strip_prefix
 from genparams.runtime.published_spec import param_from_json
 from genparams.runtime.rules import RuleError, compile_rule
 from genparams.runtime.spec import CompiledParam, compile_param
@@ -35,7 +36,10 @@ def described_parameters(
     for param in described["parameters"]:
         yield param["name"], param
     for group in described["maps"]:
-        for key in values.get(group["for_each"]) or ():
+        keys: Iterable[str] = values.get(group["for_each"]) or ()
+        if group["for_each"].endswith(OVERRIDE_KEYS):  # an open group: the names declared
+            keys = keys_under(group["path"], values)
+        for key in keys:
             for field in group["fields"]:  # a field named "" is the entry itself (per item)
                 yield ".".join(p for p in (group["path"], key, field["name"]) if p), field
 

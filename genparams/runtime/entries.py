@@ -58,6 +58,19 @@ def open_maps(compiled: CompiledSchema) -> tuple[str, ...]:
     return tuple(m for m, key_name in compiled.maps.items() if key_name == OVERRIDE_KEYS)
 
 
+def keys_under(map_path: str, names: Iterable[str]) -> list[str]:
+    """The keys an open group's entries have among ``names``, in order of first appearance:
+    the segment after ``map_path`` of each name with more segments below it."""
+    depth = len(map_path.split("."))
+    found: list[str] = []
+    for name in names:
+        parts = name.split(".")
+        if len(parts) > depth + 1 and ".".join(parts[:depth]) == map_path:
+            if parts[depth] not in found:
+                found.append(parts[depth])
+    return found
+
+
 def override_keys(
     compiled: CompiledSchema, names: Iterable[str], full_name: Callable[[str], str]
 ) -> tuple[dict[str, list[str]], list[str]]:
@@ -68,13 +81,7 @@ def override_keys(
     problems: list[str] = []
     names = list(names)
     for map_path in open_maps(compiled):
-        depth = len(map_path.split("."))
-        found: list[str] = []
-        for name in names:
-            parts = name.split(".")
-            if len(parts) > depth + 1 and ".".join(parts[:depth]) == map_path:
-                if parts[depth] not in found:
-                    found.append(parts[depth])
+        found = keys_under(map_path, names)
         for key in [k for k in found if not is_entry_key(k)]:
             found.remove(key)
             problems.append(

@@ -16,9 +16,13 @@ from rcl_interfaces.msg import FloatingPointRange, ParameterDescriptor
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
+from genparams.audit.findings import VIOLATION
+from genparams.audit.walk import audit
 from genparams.runtime import ParameterDeclarationError
+from genparams.tune.graph import Graph
 from tests.golden import CASES
-from tests.support import RosHarness, import_file
+from tests.runtime.served_node import served
+from tests.support import RosHarness, import_file, unique_name
 
 PARAMS = """\
 /**:
@@ -178,3 +182,19 @@ def test_remote_reads_the_entries_declared(
     assert snapshot == cfg.snapshot() and list(snapshot.sensors) == ["front", "rear"]
     assert ros.wait(remote.set({"sensors.front.rate": 60.0})) is None
     assert cfg.sensors["front"].rate == 60.0
+
+
+def test_audit_checks_each_entry(module: types.ModuleType, tmp_path: Path) -> None:
+    graph = Graph(unique_name("open_groups_graph"))
+    try:
+        with served(module.OpenGroupsParams, params_file(tmp_path)) as target:
+            assert graph.services_ready(target, 10.0)
+            result = audit(graph, only=[target], settle=0.3, timeout=10.0)
+    finally:
+        graph.close()
+    assert target in result.audited
+    # (Maps inside maps, as controllers.<key>.gains, are not expanded by audit.)
+    sensors = [f for f in result.findings if f.parameter.startswith("sensors")]
+    assert [f.text() for f in sensors if f.kind == VIOLATION] == []
+    drifted = {f.parameter for f in result.findings if f.parameter.startswith("sensors")}
+    assert drifted == {"sensors.front.rate"}  # audited against the entry's default, 30.0
