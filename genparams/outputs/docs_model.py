@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from genparams import __version__
 from genparams.outputs.params_file import ParamsFile, default_params_file
 from genparams.outputs.yaml_text import value_text
-from genparams.runtime.naming import ENTRY_KEY
+from genparams.runtime.naming import ENTRY_KEY, OVERRIDE_KEYS
 from genparams.schema.model import Group, OpenNamespace, Parameter, Schema
 
 FORMATS = ("markdown", "rst")
@@ -120,9 +120,8 @@ def _mapped_note(group: Group) -> str:
         )
     if not group.mapped_over:
         return ""
-    return (
-        f"One entry per item of {group.mapped_over}; in the names below, {ENTRY_KEY} is the item."
-    )
+    what = "key" if group.mapped_over == OVERRIDE_KEYS else "item"
+    return f"One entry per {group.keyed_by}; in the names below, {ENTRY_KEY} is the {what}."
 
 
 def _open_doc(namespace: OpenNamespace) -> ParameterDoc:

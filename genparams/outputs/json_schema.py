@@ -107,6 +107,10 @@ def _parameter_name(parameter: Parameter) -> str:
     return f"param.{parameter.ros_name}"
 
 
+def _article(words: str) -> str:
+    return f"an {words}" if words[:1] in "aeiou" else f"a {words}"
+
+
 def _map_name(group: Group) -> str:
     return f"map.{group.ros_name}"
 
@@ -125,7 +129,7 @@ def _map_schema(group: Group) -> dict[str, Any]:
         patterns[dotted_pattern((ENTRY_KEY, *path))] = {"$ref": _ref(item, path)}
     return {
         "type": "object",
-        "description": f"One entry per item of {group.mapped_over}.",
+        "description": f"One entry per {group.keyed_by}.",
         "patternProperties": patterns,
         "additionalProperties": False,
     }
@@ -173,9 +177,7 @@ def _group_schema(group: Group, old_names: _OldNames, *, required: bool) -> dict
         "additionalProperties": False,
     }
     if group.mapped_over:
-        result["description"] = (
-            f"One entry of {group.ros_name}, for an item of {group.mapped_over}."
-        )
+        result["description"] = f"One entry of {group.ros_name}, for {_article(group.keyed_by)}."
     if patterns:
         result["patternProperties"] = patterns
     if required_here:

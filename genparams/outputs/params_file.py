@@ -26,6 +26,7 @@ from genparams.outputs.yaml_text import (
     value_text,
 )
 from genparams.paramsfile.ros_yaml import PARAMS_KEY, absolute, node_pattern_problem, ros_scalar
+from genparams.runtime.naming import OVERRIDE_KEYS
 from genparams.schema.model import Group, Parameter, Schema
 
 ALL_NODES = "/**"
@@ -138,8 +139,18 @@ def _group_entries(
             entries.extend(_group_entries(child, indent + _STEP, comments, keys))
             continue
         # A mapped group: one entry per default item of its for_each parameter.
-        note = (f"One entry per item of {child.mapped_over}.",) if comments else ()
+        note = (f"One entry per {child.keyed_by}.",) if comments else ()
         items = keys.get(child.mapped_over, ())
+        if child.mapped_over == OVERRIDE_KEYS:
+            # An open group: a params file names its entries; the defaults file shows one.
+            example = (f"Write one entry per key under {name}, for example:",)
+            entries.append(Entry(indent, name, "", (*note, *example), disabled=True))
+            entries.append(Entry(indent + _STEP, key_text("<key>"), "", (), disabled=True))
+            entries.extend(
+                replace(e, disabled=True)
+                for e in _group_entries(child, indent + _STEP * 2, comments, keys)
+            )
+            continue
         if not items:
             why = (f"{child.mapped_over} has no default items: no entries to write.",)
             entries.append(Entry(indent, name, "", (*note, *why), disabled=True))

@@ -15,8 +15,8 @@ from collections.abc import Sequence
 from typing import Any
 
 from genparams.paramsfile.params_reader import ParamEntry, Section
-from genparams.runtime.entries import expand
-from genparams.runtime.naming import ENTRY_KEY, ENTRY_KEY_RULE, is_entry_key
+from genparams.runtime.entries import expand, override_keys
+from genparams.runtime.naming import ENTRY_KEY, ENTRY_KEY_RULE, OVERRIDE_KEYS, is_entry_key
 from genparams.runtime.spec import CompiledParam
 from genparams.runtime.types import ValueTypeError
 from genparams.runtime.validators import Custom
@@ -84,8 +84,9 @@ class SectionChecker:
 
     def key_lists(self, sections: Sequence[Section]) -> dict[str, Any]:
         """The items of each for_each parameter: as the file gives them (valid), else default."""
-        keys: dict[str, Any] = {}
-        for name in set(self.compiled.maps.values()):
+        names = [entry.name for section in sections for entry in section.entries]
+        keys: dict[str, Any] = dict(override_keys(self.compiled, names, str)[0])  # open groups
+        for name in set(self.compiled.maps.values()) & set(self.compiled.parameters):
             param = self.params[name]
             if not param.spec.required:
                 keys[name] = param.type.coerce_default(param.spec.default)
@@ -169,6 +170,8 @@ class SectionChecker:
             maps = [".".join(pattern[:i]) for i, t in enumerate(pattern) if t == ENTRY_KEY]
             for key, mapped in zip(keys, maps, strict=True):
                 key_name = self.compiled.maps[mapped]
+                if key_name == OVERRIDE_KEYS:
+                    key_name = f"the keys under {mapped}"
                 if not is_entry_key(key):
                     message = (
                         f"unknown parameter: {key!r} cannot be an item of {key_name} (use "

@@ -27,7 +27,7 @@ from genparams.runtime.entries import resolve_all
 from genparams.runtime.errors import ParameterDeclarationError
 from genparams.runtime.lifecycle import mutability_problem
 from genparams.runtime.mapped import EntryPlan, MappedEntries
-from genparams.runtime.naming import is_ros_token, join_prefix
+from genparams.runtime.naming import is_ros_token, join_prefix, strip_prefix
 from genparams.runtime.overrides import OverrideReader
 from genparams.runtime.params import Params
 from genparams.runtime.rewrites import add_rewrite, typed_empty_arrays
@@ -107,7 +107,10 @@ class Binding(Generic[P]):
         reader = OverrideReader(
             node, full, old_names_by_current(compiled.aliases), adopted=compiled.adopted
         )
-        parameters, values, problems = resolve_all(compiled, reader.read, full)
+        given_names = (strip_prefix(prefix, name) for name in reader.overrides)
+        parameters, values, problems = resolve_all(
+            compiled, reader.read, full, given_names=[n for n in given_names if n is not None]
+        )
         clashes = [
             f"{full(name)}: already declared on this node by {owner.schema_name}"
             for name in parameters

@@ -7,7 +7,7 @@ from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import replace
 from typing import Any
 
-from genparams.runtime.naming import ENTRY_KEY
+from genparams.runtime.naming import ENTRY_KEY, ENTRY_KEY_RULE, OVERRIDE_KEYS, is_entry_key
 from genparams.runtime.resolve import resolve_values
 from genparams.runtime.spec import CompiledParam, CompiledSchema
 
@@ -46,6 +46,52 @@ def instantiate(template: CompiledParam, keys: Sequence[str]) -> CompiledParam:
     return replace(template, spec=replace(template.spec, name=name), attribute_path=path)
 
 
+def key_slot(compiled: CompiledSchema, map_path: str) -> str:
+    """Where ``values`` hold a map's keys: its for_each parameter, or for an open group
+    (``for_each: overrides``) a name of its own that no parameter can have."""
+    key_name = compiled.maps[map_path]
+    return f"{OVERRIDE_KEYS}{map_path}" if key_name == OVERRIDE_KEYS else key_name
+
+
+def open_maps(compiled: CompiledSchema) -> tuple[str, ...]:
+    """The open groups: keyed by the names their overrides hold (``for_each: overrides``)."""
+    return tuple(m for m, key_name in compiled.maps.items() if key_name == OVERRIDE_KEYS)
+
+
+def keys_under(map_path: str, names: Iterable[str]) -> list[str]:
+    """The keys an open group's entries have among ``names``, in order of first appearance:
+    the segment after ``map_path`` of each name with more segments below it."""
+    depth = len(map_path.split("."))
+    found: list[str] = []
+    for name in names:
+        parts = name.split(".")
+        if len(parts) > depth + 1 and ".".join(parts[:depth]) == map_path:
+            if parts[depth] not in found:
+                found.append(parts[depth])
+    return found
+
+
+def override_keys(
+    compiled: CompiledSchema, names: Iterable[str], full_name: Callable[[str], str]
+) -> tuple[dict[str, list[str]], list[str]]:
+    """The keys of each open group, by key slot, from the relative ``names`` given
+    (``sensors.front.topic`` gives ``front`` to ``sensors``), in order of first
+    appearance; and a problem for each key that cannot name an entry."""
+    keys: dict[str, list[str]] = {}
+    problems: list[str] = []
+    names = list(names)
+    for map_path in open_maps(compiled):
+        found = keys_under(map_path, names)
+        for key in [k for k in found if not is_entry_key(k)]:
+            found.remove(key)
+            problems.append(
+                f"{full_name(map_path)}: key {key!r} given in the overrides cannot name an "
+                f"entry: use {ENTRY_KEY_RULE}"
+            )
+        keys[key_slot(compiled, map_path)] = found
+    return keys, problems
+
+
 def expand(
     compiled: CompiledSchema,
     values: Mapping[str, Any],
@@ -58,7 +104,7 @@ def expand(
     existing = existing or {}
     entries: dict[str, CompiledParam] = {}
     for template in compiled.templates.values():
-        key_lists = [values.get(compiled.maps[m]) for m in map_chain(template.name)]
+        key_lists = [values.get(key_slot(compiled, m)) for m in map_chain(template.name)]
         if any(keys is None for keys in key_lists):
             continue
         parts = template.name.split(".")
@@ -93,11 +139,14 @@ def resolve_all(
     full_name: Callable[[str], str] = lambda name: name,
     source: str = "override",
     lenient: bool = False,
+    given_names: Iterable[str] = (),
 ) -> tuple[dict[str, CompiledParam], dict[str, Any], list[str]]:
     """Parameters (fixed ones, then entries) with their starting values, and every problem.
 
     Key parameters are fixed, so their values are known before the entries
-    they key are expanded. ``read`` gives the ROS-form values given for names.
+    they key are expanded. ``read`` gives the ROS-form values given for names;
+    ``given_names`` are the relative names given at all, whose segments under an
+    open group (``for_each: overrides``) are its keys.
     A parameter with a condition (``when``) whose condition does not hold is
     left out of the parameters, and its value is None.
     """
@@ -114,7 +163,9 @@ def resolve_all(
     )
     values.update((name, None) for name in conditional if name not in parameters)
     if compiled.templates:
-        entries = expand(compiled, values)
+        keys, key_problems = override_keys(compiled, given_names, full_name)
+        problems.extend(key_problems)
+        entries = expand(compiled, {**values, **keys})
         entry_values, entry_problems = resolve_values(
             compiled, read(entries), full_name, source, parameters=entries, lenient=lenient
         )

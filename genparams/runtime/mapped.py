@@ -38,7 +38,7 @@ from genparams.runtime import rclpy_internals as internals
 from genparams.runtime.changes import Change
 from genparams.runtime.declaring import descriptor_for, replace_batch, ros_parameter
 from genparams.runtime.deprecation import Notices
-from genparams.runtime.entries import expand, template_keys
+from genparams.runtime.entries import expand, key_slot, map_chain, open_maps, template_keys
 from genparams.runtime.naming import join_prefix, strip_prefix
 from genparams.runtime.overrides import OverrideReader
 from genparams.runtime.resolve import resolve_values
@@ -78,9 +78,26 @@ class MappedEntries:
         self.notices = notices
         self.full_name = functools.partial(join_prefix, binding.prefix)
         self.entries = dict(entries)  # relative name -> parameter, in key order
-        self.key_names = frozenset(compiled.maps.values())  # relative names of key parameters
+        # relative names of key parameters (open groups have none: their keys stay)
+        self.key_names = frozenset(n for n in compiled.maps.values() if n in compiled.parameters)
         self.keys_by_full_name = {self.full_name(k): k for k in self.key_names}
         self.templates = tuple(compiled.templates)  # "gains.*.p"
+        self.open_keys = self._open_keys()  # the keys of open groups, fixed at declaration
+
+    def _open_keys(self) -> dict[str, list[str]]:
+        """The keys of each open group (``for_each: overrides``), by key slot, as declared."""
+        keys: dict[str, list[str]] = {}
+        for map_path in open_maps(self.compiled):
+            found = keys.setdefault(key_slot(self.compiled, map_path), [])
+            for template in self.templates:
+                chain = map_chain(template)
+                if map_path not in chain:
+                    continue
+                for name in self.entries:
+                    filled = template_keys(template, name)
+                    if filled is not None and filled[chain.index(map_path)] not in found:
+                        found.append(filled[chain.index(map_path)])
+        return keys
 
     @classmethod
     def attach(
@@ -122,7 +139,7 @@ class MappedEntries:
             for name in self.key_names
         }
         values.update(proposed)
-        expanded = expand(self.compiled, values, self.entries)
+        expanded = expand(self.compiled, {**values, **self.open_keys}, self.entries)
         added = {n: p for n, p in expanded.items() if n not in self.entries}
         reader = OverrideReader(self.binding.node, self.full_name)
         new_values, problems = resolve_values(
@@ -180,7 +197,7 @@ class MappedEntries:
                 values[param.name] = value
         # A parameter left out by its condition (``when``) is None.
         fixed = {name: values.get(name) for name in self.compiled.parameters}
-        entries = expand(self.compiled, fixed, self.entries)
+        entries = expand(self.compiled, {**fixed, **self.open_keys}, self.entries)
         added = {n: p for n, p in entries.items() if n not in self.entries}
         removed = [n for n in self.entries if n not in entries]
         reader = OverrideReader(binding.node, self.full_name)

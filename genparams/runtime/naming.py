@@ -41,6 +41,12 @@ def is_ros_name(name: str) -> bool:
 # In the names of a mapped group's parameters, this segment stands for one key.
 ENTRY_KEY = "*"
 
+# ``for_each: overrides`` on a namespace: its entries are the keys the node's overrides
+# hold under it when it is declared (an open group). In the runtime's SchemaSpec.maps the
+# group maps to OVERRIDE_KEYS, which is no ROS name, so no parameter can be taken for it.
+FROM_OVERRIDES = "overrides"
+OVERRIDE_KEYS = "(overrides)"
+
 # The slot of a generated group holding the entries of its in-place mapped group
 # (schema key "*"). Attributes never start with "_", so it hides no parameter.
 MAP_SLOT = "_map"

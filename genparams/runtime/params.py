@@ -72,6 +72,7 @@ class Params(Group):
             lambda names: {n: given[n] for n in names if n in given},
             source="value",
             lenient=True,
+            given_names=given,
         )
         unknown = sorted(set(given) - set(parameters))
         every = compiled.parameters

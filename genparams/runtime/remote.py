@@ -21,7 +21,13 @@ from rclpy.task import Future
 from genparams.runtime.binding import check_prefix
 from genparams.runtime.changes import Changes
 from genparams.runtime.declaring import ros_parameter
-from genparams.runtime.entries import expand, instantiate, template_keys
+from genparams.runtime.entries import (
+    expand,
+    instantiate,
+    open_maps,
+    override_keys,
+    template_keys,
+)
 from genparams.runtime.errors import RemoteParameterError, RemoteSetError
 from genparams.runtime.naming import is_entry_key, join_prefix, strip_prefix
 from genparams.runtime.params import Params
@@ -98,10 +104,26 @@ class RemoteParams(Generic[P]):
         fixed = {n: p for n, p in parameters.items() if n not in conditional}
 
         def fixed_read(values: dict[str, Any]) -> None:
+            opened = open_maps(self.compiled)
+            if opened:  # open groups: their keys are the names declared under them
+                prefixes = [self.full_name(path) for path in opened]
+                self.client.list_parameters(prefixes, 0, lambda found: listed(values, found))
+            else:
+                entries_read(values, {})
+
+        def listed(values: dict[str, Any], response_future: Future) -> None:
+            try:
+                names = (self.relative_name(n) for n in response_future.result().result.names)
+                keys, _ = override_keys(self.compiled, [n for n in names if n], self.full_name)
+                entries_read(values, keys)
+            except Exception as exc:  # handed to whoever waits on the future
+                result.set_exception(exc)
+
+        def entries_read(values: dict[str, Any], keys: Mapping[str, Any]) -> None:
             more = {n: p for n, p in conditional.items() if p.spec.declared_with(values)}
             values.update((n, None) for n in conditional if n not in more)
             if self.compiled.templates:
-                more.update(expand(self.compiled, values))
+                more.update(expand(self.compiled, {**values, **keys}))
             if not more:
                 result.set_result(self.snapshot(values))
                 return

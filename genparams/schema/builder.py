@@ -114,6 +114,8 @@ class _ModelBuilder:
                 at_key=True,
             )
             mapped_over = ""
+        if mapped_over == naming.FROM_OVERRIDES:
+            mapped_over = self.open_group(doc_path, path, in_place=in_place)
         # Below a mapped group, names hold the entry key's place.
         member_path = (*path, naming.ENTRY_KEY) if mapped_over else path
         for key, value in mapping.items():
@@ -165,6 +167,25 @@ class _ModelBuilder:
         if mapped_over:
             self.mapped.append((group, doc_path))
         return group
+
+    def open_group(self, doc_path: Path, path: tuple[str, ...], *, in_place: bool) -> str:
+        """``for_each: overrides``: entries keyed by the names the overrides hold below the
+        namespace. Only a named namespace outside every mapped group can be one."""
+        where = (*doc_path, FOR_EACH)
+        if in_place:
+            message = (
+                'for_each: overrides keys a namespace, not "*": its entries need a name of '
+                "their own to be found under"
+            )
+        elif naming.ENTRY_KEY in path:
+            message = (
+                "for_each: overrides is not supported inside a mapped group: the keys found "
+                "under one entry would differ from another's"
+            )
+        else:
+            return naming.OVERRIDE_KEYS
+        self.problem(where, message, at_key=True)
+        return ""
 
     def per_item(
         self,

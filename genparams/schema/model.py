@@ -11,7 +11,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass, replace
 from typing import Any
 
-from genparams.runtime.naming import ENTRY_KEY
+from genparams.runtime.naming import ENTRY_KEY, OVERRIDE_KEYS
 from genparams.runtime.spec import CompiledParam, EntryKeys, ParamSpec, compile_param
 from genparams.runtime.types import ParamType
 from genparams.schema.errors import Location
@@ -221,6 +221,14 @@ class Group:
     per_item: bool = False
 
     @property
+    def keyed_by(self) -> str:
+        """What keys the entries, in every output's words: "item of joints", or for an open
+        group (``for_each: overrides``) "key given under sensors"."""
+        if self.mapped_over == OVERRIDE_KEYS:
+            return f"key given under {self.ros_name} in the overrides"
+        return f"item of {self.mapped_over}"
+
+    @property
     def entry_annotation(self) -> str:
         """The type of one entry: the entry class, or the value of a per-item parameter."""
         return self.parameters[0].annotation if self.per_item else self.class_name
@@ -245,7 +253,7 @@ class Group:
         if self.per_item:
             return self.parameters[0].docstring
         if self.mapped_over:
-            return f"Mapped group {self.ros_name}: one entry per item of {self.mapped_over}."
+            return f"Mapped group {self.ros_name}: one entry per {self.keyed_by}."
         return f"Namespace {self.ros_name}."
 
     @property
@@ -262,7 +270,7 @@ class Group:
     def docstring(self) -> str:
         if self.mapped_over:
             where = self.ros_name or "the top level"
-            return f"One entry of {where}, for each item of {self.mapped_over}."
+            return f"One entry of {where}, for each {self.keyed_by}."
         return f"Parameters under {self.ros_name}." if self.ros_name else ""
 
     @property
@@ -361,7 +369,7 @@ def with_entry_keys(root: Group) -> Group:
     """``root`` with each for_each parameter told which mapped groups its items name."""
     keyed: dict[str, list[str]] = {}
     for group in root.walk_groups():  # the order the runtime compiles SchemaSpec.maps in
-        if group.mapped_over:
+        if group.mapped_over and group.mapped_over != OVERRIDE_KEYS:
             keyed.setdefault(group.mapped_over, []).append(group.ros_name or "the top level")
     if not keyed:
         return root

@@ -48,6 +48,14 @@ def check_maps(
     for group, doc_path in mapped:
         where = (*doc_path, "for_each")
         target = group.mapped_over
+        if target == naming.OVERRIDE_KEYS:
+            if naming.FROM_OVERRIDES in fixed:
+                report(
+                    where,
+                    f"for_each: {naming.FROM_OVERRIDES} takes the keys from the overrides, "
+                    f"but the schema also has a parameter {naming.FROM_OVERRIDES!r}: rename it",
+                )
+            continue
         param = fixed.get(target)
         if param is None:
             if not unbuilt(target):
@@ -117,6 +125,11 @@ def _missing_target(
 ) -> str:
     if not naming.is_ros_name(target):
         return f"for_each must be a dotted parameter name, got {target!r}"
+    if target == naming.FROM_OVERRIDES:
+        return (
+            "for_each: overrides keys the entries of a namespace; a parameter with for_each "
+            "needs a string_array parameter naming its items"
+        )
     parts = tuple(target.split("."))
     for path, name in map_paths:
         if _inside(parts, path) and len(parts) > len(path):
