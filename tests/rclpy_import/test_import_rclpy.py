@@ -9,6 +9,7 @@ import shutil
 import subprocess
 import sys
 from pathlib import Path
+from typing import Any
 
 import pytest
 import yaml
@@ -207,3 +208,120 @@ def test_a_statement_declaring_several_stays_whole_when_one_is_left_out(
     if shutil.which("patch"):
         subprocess.run(["patch", "-p0", "--quiet"], input=diff, text=True, check=True)
         assert source.read_text("utf-8").endswith("        self.params = MParams.declare(self)\n")
+
+
+def _imported(tmp_path: Path, body: str, capsys: pytest.CaptureFixture[str]) -> tuple[Any, str]:
+    """The schema and messages of a class whose ``__init__`` is ``body``."""
+    source = tmp_path / "node.py"
+    lines = "".join(f"        {line}\n" for line in body.strip("\n").splitlines())
+    source.write_text(f"class N:\n    def __init__(self):\n{lines}", encoding="utf-8")
+    code, out, err = run(capsys, str(source))
+    assert code in (0, 1), err
+    return yaml.safe_load(out)["parameters"] or {}, err
+
+
+def test_conditions_and_loops_read_through_variables(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    parameters, err = _imported(
+        tmp_path,
+        """
+mode = self.declare_parameter('mode', 'fast').value
+names = self.get_parameter_or('x', None)
+self.declare_parameter('scale', 1.5)
+wheels = self.declare_parameter('wheels', ['left', 'right']).value
+for wheel in wheels:
+    self.declare_parameter('radius.' + wheel, 0.1)
+if mode == 'fast':
+    self.declare_parameter('boost', True)
+if self.get_parameter('scale').value in [1, 2.5]:
+    self.declare_parameter('note', 'x')
+""",
+        capsys,
+    )
+    assert "warning" not in err
+    assert parameters["radius"] == {"type": "double", "default": 0.1, "for_each": "wheels"}
+    assert parameters["boost"]["when"] == {"mode": "fast"}
+    assert parameters["note"]["when"] == {"scale": [1.0, 2.5]}
+
+
+@pytest.mark.parametrize(
+    "body, message",
+    [
+        (  # an else branch: when cannot say "not"
+            "self.declare_parameter('on', True)\n"
+            "if self.get_parameter('on').value == True:\n    pass\n"
+            "else:\n    self.declare_parameter('x', 1)",
+            "declared only under a condition (if self.get_parameter('on').value == True): "
+            "only == or in",
+        ),
+        (  # another comparison
+            "self.declare_parameter('n', 1)\nif self.get_parameter('n').value > 0:\n"
+            "    self.declare_parameter('x', 1)",
+            "only == or in",
+        ),
+        (  # a parameter not imported before
+            "if self.get_parameter('later').value == 1:\n    self.declare_parameter('x', 1)\n"
+            "self.declare_parameter('later', 1)",
+            "'later' is not a parameter imported before it",
+        ),
+        (  # a value of another type
+            "self.declare_parameter('n', 1)\nif self.get_parameter('n').value == 'a':\n"
+            "    self.declare_parameter('x', 1)",
+            "a value compared with 'n' is not a int",
+        ),
+        (  # an optional parameter decides nothing at startup
+            "self.declare_parameter('n', Parameter.Type.INTEGER)\n"
+            "if self.get_parameter('n').value == 1:\n    self.declare_parameter('x', 1)",
+            "'n' must be a bool, int, double or string parameter with a value",
+        ),
+        (  # a variable assigned twice
+            "self.declare_parameter('n', 1)\nv = self.get_parameter('n').value\nv = 2\n"
+            "if v == 1:\n    self.declare_parameter('x', 1)",
+            "only == or in",
+        ),
+        (  # a loop over a list that is not a string_array parameter
+            "self.declare_parameter('ids', [1, 2])\n"
+            "for i in self.get_parameter('ids').value:\n    self.declare_parameter(f'w.{i}', 1)",
+            "must run over a string_array parameter declared before it",
+        ),
+        (  # a per-item parameter under a condition
+            "self.declare_parameter('on', True)\nself.declare_parameter('js', ['a'])\n"
+            "if self.get_parameter('on').value == True:\n"
+            "    for j in self.get_parameter('js').value:\n        self.declare_parameter(j, 1)",
+            "a per-item parameter has no when",
+        ),
+        (  # a name with more after the item
+            "self.declare_parameter('js', ['a'])\nfor j in self.get_parameter('js').value:\n"
+            "    self.declare_parameter(f'{j}.gain', 1.0)",
+            "only a name that ends with the item translates",
+        ),
+        (
+            "self.declare_parameter('x', Parameter.Type.INTEGER, "
+            "ParameterDescriptor(dynamic_typing=True))",
+            "a type with dynamic_typing=True: rclpy refuses it",
+        ),
+        ("self.declare_parameter('x', [], ParameterDescriptor(dynamic_typing=True))", "empty list"),
+    ],
+)
+def test_what_the_new_features_cannot_state_stays_a_warning(
+    body: str, message: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    parameters, err = _imported(tmp_path, body, capsys)
+    assert message in err
+    assert "x" not in parameters
+
+
+def test_declared_by_name_only_is_dynamically_typed_and_optional(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    parameters, err = _imported(
+        tmp_path,
+        "self.declare_parameter('free')\n"
+        "self.declare_parameter('scale', 0.5, ParameterDescriptor(dynamic_typing=True, "
+        "floating_point_range=[FloatingPointRange(from_value=0.0, to_value=1.0)]))",
+        capsys,
+    )
+    assert parameters["free"] == {"type": "any", "optional": True}
+    assert parameters["scale"] == {"type": "any", "default": 0.5}
+    assert "floating_point_range on a dynamically typed parameter" in err
