@@ -217,7 +217,7 @@ def _imported(tmp_path: Path, body: str, capsys: pytest.CaptureFixture[str]) -> 
     source.write_text(f"class N:\n    def __init__(self):\n{lines}", encoding="utf-8")
     code, out, err = run(capsys, str(source))
     assert code in (0, 1), err
-    return yaml.safe_load(out)["parameters"] or {}, err
+    return (yaml.safe_load(out)["parameters"] if out else {}), err
 
 
 def test_conditions_and_loops_read_through_variables(
