@@ -169,6 +169,11 @@ class _Converter:
         if leaf is None:
             self.warn(at, name, f"{problem}: parameter left out")
             return LEFT_OUT
+        if per_item and leaf.get("optional"):
+            self.warn(at, name.strip("*"), f"one parameter per item of {found.runtime_loop}, "
+                      "with no value: "
+                      "a per-item parameter needs one: parameter left out")  # fmt: skip
+            return LEFT_OUT
         schema_type = leaf["type"]
         if schema_type == "byte_array":
             self.note(
@@ -186,8 +191,8 @@ class _Converter:
             self.note(
                 self.first[key].at,
                 key,
-                f"names the items of {name!r}: genparams checks that each can name one, "
-                "and says so in its additional_constraints",
+                f"its items name {_per_item_place(name)}: genparams checks that each can "
+                "name one, and says so in its additional_constraints",
             )
         if when is not None:
             leaf["when"] = when
@@ -213,10 +218,15 @@ class _Converter:
         key = found.loop_parameter
         target = self.first.get(key) if key is not None else None
         leaf = self.leaf(key) if key is not None and target is not None else None
-        if leaf is None or leaf.get("type") != "string_array" or "default" not in leaf:
+        if (
+            leaf is None
+            or leaf.get("type") != "string_array"
+            or "default" not in leaf
+            or "when" in leaf
+        ):
             return None, (
                 f"{computed}: the loop must run over a string_array parameter declared "
-                "before it, with a value"
+                "before it, with a value and no condition"
             )
         if found.condition is not None:
             return None, f"{computed}, under a condition: a per-item parameter has no when"
@@ -414,6 +424,10 @@ def _typed_leaf(found: Found) -> tuple[dict[str, Any] | None, str]:
     if schema_type is None:
         return None, problem
     return {"type": schema_type, "default": _default(value)}, ""
+
+
+def _per_item_place(name: str) -> str:
+    return "parameters of the top level" if name == "*" else f"the parameters of {name!r}"
 
 
 def _item_prefix(found: Found) -> str | None:

@@ -296,6 +296,11 @@ if self.get_parameter('scale').value in [1, 2.5]:
             "    self.declare_parameter(f'{j}.gain', 1.0)",
             "only a name that ends with the item translates",
         ),
+        (  # a per-item parameter with no value: optional has no per-item form
+            "self.declare_parameter('js', ['a'])\nfor j in self.get_parameter('js').value:\n"
+            "    self.declare_parameter('x.' + j)",
+            "with no value: a per-item parameter needs one",
+        ),
         (
             "self.declare_parameter('x', Parameter.Type.INTEGER, "
             "ParameterDescriptor(dynamic_typing=True))",
