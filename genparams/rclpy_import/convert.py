@@ -4,6 +4,11 @@ Each declaration is imported *exactly* (every descriptor field and the value
 kept), *approximately* (imported, but part of it could not be read: a warning
 says which) or *left out* (a warning says why). Nothing is dropped without a
 warning at its FILE:LINE:COL.
+
+A declaration by type only is ``optional``; ``dynamic_typing`` (or a name alone)
+is ``type: any``; one in a loop over a string_array parameter's value, named by the
+item, is a ``for_each`` leaf; one under ``if <parameter> == <literal>`` (or ``in``)
+has a ``when``.
 """
 
 from __future__ import annotations
@@ -70,9 +75,7 @@ class _Converter:
 
     def run(self) -> Imported:
         for option in self.unit.options:
-            message = awaiting_feature(option)
-            if message is not None:
-                self.warn(option.at, "", message)
+            self.warn(option.at, "", awaiting_feature(option))
         for change in self.unit.afterwards:
             self.warn(change.at, "", f"{change.construct}: the schema keeps the declared one")
         for found in self.unit.found:
