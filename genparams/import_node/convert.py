@@ -2,6 +2,8 @@
 
 Each parameter's current value becomes its default and every descriptor field is
 kept: description, additional_constraints, read_only and the range with its step.
+A parameter not set (declared by type only) is ``optional`` of its descriptor's type;
+a dynamically typed one is ``type: any``.
 Whatever a schema cannot state becomes a warning naming the parameter, and the
 parameter is left out, never silently changed.
 """
@@ -18,6 +20,7 @@ from genparams.runtime.naming import NODE_PARAMETERS, is_ros_token
 from genparams.runtime.types import TYPES_BY_ROS_TYPE
 
 NOT_SET = 0  # rcl_interfaces ParameterType.PARAMETER_NOT_SET
+BYTE_ARRAY = 5  # rcl_interfaces ParameterType.PARAMETER_BYTE_ARRAY
 
 
 @dataclass(frozen=True)
@@ -31,6 +34,7 @@ class Reported:
     additional_constraints: str = ""
     read_only: bool = False
     dynamic_typing: bool = False
+    descriptor_type: int = NOT_SET  # the descriptor's type: a type-only declaration has one
     integer_range: tuple[int, int, int] | None = None  # from, to, step
     floating_point_range: tuple[float, float, float] | None = None
 
@@ -90,12 +94,19 @@ def _problem(param: Reported, names: set[str]) -> str | None:
     if any(".".join(parts[:n]) in names for n in range(1, len(parts))):
         return f"{'.'.join(parts[:-1])!r} is a parameter too, so it cannot be a namespace"
     if param.dynamic_typing:
-        return "dynamic_typing has no schema form yet"
-    if param.type == NOT_SET:
-        return "declared by type only, with no value: it has no schema form yet"
-    if param.type not in TYPES_BY_ROS_TYPE:
-        return f"unknown parameter type {param.type}"
-    is_array = TYPES_BY_ROS_TYPE[param.type].name.endswith("_array")
+        if param.integer_range or param.floating_point_range:
+            return "a range on a dynamically typed parameter: a schema cannot state it"
+        if param.type != NOT_SET and param.type not in TYPES_BY_ROS_TYPE:
+            return f"unknown parameter type {param.type}"
+        if param.type == BYTE_ARRAY:
+            return "dynamically typed, holding a byte_array: a schema default cannot be one"
+        return None
+    kind = param.type if param.type != NOT_SET else param.descriptor_type
+    if kind == NOT_SET:
+        return "not set, and its descriptor gives no type"
+    if kind not in TYPES_BY_ROS_TYPE:
+        return f"unknown parameter type {kind}"
+    is_array = TYPES_BY_ROS_TYPE[kind].name.endswith("_array")
     if is_array and (param.integer_range or param.floating_point_range):
         return "a range on an array: ROS applies it to no item, genparams to every item"
     for bounds in (param.integer_range, param.floating_point_range):
@@ -107,8 +118,17 @@ def _problem(param: Reported, names: set[str]) -> str | None:
 
 
 def _leaf(param: Reported) -> dict[str, Any]:
-    param_type = TYPES_BY_ROS_TYPE[param.type]
-    leaf: dict[str, Any] = {"type": param_type.name, "default": param.value}
+    """The parameter as a leaf: ``type: any`` for a dynamically typed one, ``optional``
+    for one not set (declared by type only), else its type and current value."""
+    if param.dynamic_typing:
+        leaf: dict[str, Any] = {"type": "any"}
+    else:
+        kind = param.type if param.type != NOT_SET else param.descriptor_type
+        leaf = {"type": TYPES_BY_ROS_TYPE[kind].name}
+    if param.type == NOT_SET:
+        leaf["optional"] = True
+    else:
+        leaf["default"] = param.value
     if param.description:
         leaf["description"] = param.description
     if param.read_only:

@@ -52,6 +52,7 @@ def _reported(name: str, value: Any, descriptor: Any) -> Reported:
         additional_constraints=descriptor.additional_constraints,
         read_only=descriptor.read_only,
         dynamic_typing=descriptor.dynamic_typing,
+        descriptor_type=descriptor.type,
         integer_range=None
         if integer is None
         else (integer.from_value, integer.to_value, integer.step),

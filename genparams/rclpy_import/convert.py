@@ -4,6 +4,11 @@ Each declaration is imported *exactly* (every descriptor field and the value
 kept), *approximately* (imported, but part of it could not be read: a warning
 says which) or *left out* (a warning says why). Nothing is dropped without a
 warning at its FILE:LINE:COL.
+
+A declaration by type only is ``optional``; ``dynamic_typing`` (or a name alone)
+is ``type: any``; one in a loop over a string_array parameter's value, named by the
+item, is a ``for_each`` leaf; one under ``if <parameter> == <literal>`` (or ``in``)
+has a ``when``.
 """
 
 from __future__ import annotations
@@ -33,13 +38,16 @@ class Imported:
     warnings: list[SchemaProblem] = field(default_factory=list)
     notes: list[SchemaProblem] = field(default_factory=list)
     outcome: list[tuple[Found, str]] = field(default_factory=list)  # each declaration's fate
+    # the schema key of each imported declaration, by id(found): a per-item one's is its
+    # for_each leaf (``offsets``, or ``*`` at the top level)
+    keys: dict[int, str] = field(default_factory=dict)
 
     def count(self, outcome: str) -> int:
         return sum(1 for _, o in self.outcome if o == outcome)
 
     @property
     def imported_names(self) -> set[str]:
-        return {f.name.value for f, o in self.outcome if o != LEFT_OUT}
+        return {f.name.value for f, o in self.outcome if o != LEFT_OUT and f.name.problem is None}
 
 
 def schema_name(unit_name: str, file_stem: str) -> str:
@@ -67,9 +75,7 @@ class _Converter:
 
     def run(self) -> Imported:
         for option in self.unit.options:
-            message = awaiting_feature(option)
-            if message is not None:
-                self.warn(option.at, "", message)
+            self.warn(option.at, "", awaiting_feature(option))
         for change in self.unit.afterwards:
             self.warn(change.at, "", f"{change.construct}: the schema keeps the declared one")
         for found in self.unit.found:
@@ -103,7 +109,7 @@ class _Converter:
                 found, outcome = self.imported.outcome[index]
                 if outcome == LEFT_OUT:
                     continue
-                name = found.name.value
+                name = self.imported.keys.pop(id(found))
                 self.warn(found.at, name, "declared by the same statement as a parameter left "
                           "out: left out with it")  # fmt: skip
                 self.unplace(name)
@@ -129,22 +135,31 @@ class _Converter:
 
     def declaration(self, found: Found) -> str:
         at = found.at
+        per_item = found.name.problem is not None and found.runtime_loop is not None
         if found.name.problem is not None:
-            feature = awaiting_feature(found) if found.runtime_loop is not None else None
-            reason = feature or f"a name computed at run time ({found.name.problem.what})"
-            self.warn(at, "", f"{reason}: parameter left out")
-            return LEFT_OUT
-        name = found.name.value
+            if found.runtime_loop is None:
+                what = found.name.problem.what
+                self.warn(at, "", f"a name computed at run time ({what}): parameter left out")
+                return LEFT_OUT
+            name, reason = self.per_item(found)
+            if name is None:
+                self.warn(at, "", f"{reason}: parameter left out")
+                return LEFT_OUT
+        else:
+            name = found.name.value
         if not isinstance(name, str):
             self.warn(at, "", f"the name {name!r} is not a string: parameter left out")
             return LEFT_OUT
         if found.nested is not None:
             self.warn(at, name, f"declared inside {found.nested}: parameter left out")
             return LEFT_OUT
-        feature = awaiting_feature(found)
-        if feature is not None:
-            self.warn(at, name, f"{feature}: parameter left out")
-            return LEFT_OUT
+        when: dict[str, Any] | None = None
+        if found.condition is not None:
+            when, reason = self.when(found)
+            if when is None:
+                self.warn(at, name, f"declared only under a condition ({found.condition}): "
+                          f"{reason}: parameter left out")  # fmt: skip
+                return LEFT_OUT
         if found.value.problem is not None:
             self.warn(at, name, f"value computed at run time ({found.value.problem.what}): "
                       "parameter left out")  # fmt: skip
@@ -153,11 +168,16 @@ class _Converter:
         if problem is not None:
             self.warn(at, name, f"{problem}: parameter left out")
             return LEFT_OUT
-        schema_type, problem = _schema_type(found.value.value)
-        if schema_type is None:
+        leaf, problem = _typed_leaf(found)
+        if leaf is None:
             self.warn(at, name, f"{problem}: parameter left out")
             return LEFT_OUT
-        leaf: dict[str, Any] = {"type": schema_type, "default": _default(found.value.value)}
+        if per_item and leaf.get("optional"):
+            self.warn(at, name.strip("*"), f"one parameter per item of {found.runtime_loop}, "
+                      "with no value: "
+                      "a per-item parameter needs one: parameter left out")  # fmt: skip
+            return LEFT_OUT
+        schema_type = leaf["type"]
         if schema_type == "byte_array":
             self.note(
                 at, name, "an empty list: rclpy declares a byte_array, and so does the schema"
@@ -167,15 +187,89 @@ class _Converter:
             self.warn(at, name, "ignore_override: genparams always applies overrides: imported "
                       "without it")  # fmt: skip
             exact = False
+        if per_item:
+            key = found.loop_parameter
+            assert key is not None
+            leaf["for_each"] = key
+            self.note(
+                self.first[key].at,
+                key,
+                f"its items name {_per_item_place(name)}: genparams checks that each can "
+                "name one, and says so in its additional_constraints",
+            )
+        if when is not None:
+            leaf["when"] = when
         self.place(name, leaf)
         self.first[name] = found
+        self.imported.keys[id(found)] = name
         return EXACT if exact else APPROXIMATE
+
+    def per_item(self, found: Found) -> tuple[str | None, str]:
+        """A declaration in a loop over a string_array parameter's value, named by the
+        item (``joint``, ``f"offsets.{joint}"``): the schema key of its ``for_each`` leaf
+        (``*`` at the top level, ``offsets``), or why it cannot be one."""
+        loop = found.runtime_loop
+        assert found.name.problem is not None and loop is not None
+        computed = f"one parameter per item of {loop}, its name computed from the item"
+        if found.name_is_item:
+            computed = f"one parameter per item of {loop}, named by the item"
+        prefix = _item_prefix(found)
+        if prefix is None:
+            if found.loop_variable is None or not _uses(found.name_node, found.loop_variable):
+                return None, f"a name computed at run time ({found.name.problem.what})"
+            return None, f"{computed}: only a name that ends with the item translates"
+        key = found.loop_parameter
+        target = self.first.get(key) if key is not None else None
+        leaf = self.leaf(key) if key is not None and target is not None else None
+        if (
+            leaf is None
+            or leaf.get("type") != "string_array"
+            or "default" not in leaf
+            or "when" in leaf
+        ):
+            return None, (
+                f"{computed}: the loop must run over a string_array parameter declared "
+                "before it, with a value and no condition"
+            )
+        if found.condition is not None:
+            return None, f"{computed}, under a condition: a per-item parameter has no when"
+        if found.in_list:
+            return None, f"{computed}, in a declare_parameters list"
+        return prefix or "*", ""
+
+    def when(self, found: Found) -> tuple[dict[str, Any] | None, str]:
+        """The ``when:`` of a declaration under ``if``, or why it cannot have one."""
+        simple = "only == or in against literals of a parameter declared before it translates"
+        if found.when is None:
+            return None, simple
+        name, values = found.when
+        leaf = self.leaf(name) if name in self.first else None
+        if leaf is None:
+            return None, f"{name!r} is not a parameter imported before it"
+        kind = leaf.get("type")
+        if kind not in _CONDITION_TYPES or "default" not in leaf or "when" in leaf:
+            return None, (
+                f"{name!r} must be a bool, int, double or string parameter with a value and "
+                "no condition of its own"
+            )
+        kept = [_condition_value(kind, v) for v in values]
+        if any(v is None for v in kept):
+            return None, f"a value compared with {name!r} is not a {kind}"
+        return {name: kept[0] if len(kept) == 1 else kept}, ""
+
+    def leaf(self, name: str) -> dict[str, Any] | None:
+        node: Any = self.tree
+        for part in name.split("."):
+            if not isinstance(node, dict) or part not in node:
+                return None
+            node = node[part]
+        return node if isinstance(node, dict) and "type" in node else None
 
     def name_problem(self, name: str) -> str | None:
         if name in self.first:
             where = self.location(self.first[name].at)
             return f"declared again (first at {where.line}:{where.column}; rclpy refuses it)"
-        if not is_ros_name(name):
+        if name != "*" and not is_ros_name(name):
             return "not a name genparams declares (dotted tokens of letters, digits and _)"
         if name in NODE_PARAMETERS:
             return "every node declares it already"
@@ -258,6 +352,10 @@ class _Converter:
             elif not isinstance(ranges[0], RangeValue) or ranges[0].integer != integer:
                 self.warn(found.at, name, f"{key} holds another kind of range: imported without it")
                 exact = False
+            elif schema_type == "any":
+                self.warn(found.at, name, f"{key} on a dynamically typed parameter: imported "
+                          "without it")  # fmt: skip
+                exact = False
             elif not fits:
                 self.warn(found.at, name, f"{key} on a {schema_type} parameter (rclpy does not "
                           "check it): imported without it")  # fmt: skip
@@ -296,9 +394,105 @@ def _schema_type(value: Any) -> tuple[str | None, str]:
             if all(isinstance(v, kind) for v in value):
                 return f"{schema_type}_array", ""
         return None, f"the list {value!r} mixes types: rclpy refuses it"
-    if isinstance(value, TypeMarker):  # pragma: no cover (awaiting_feature took it)
+    if isinstance(value, TypeMarker):  # pragma: no cover (_typed_leaf took it)
         return None, "a type without a value"
     return None, f"{value!r} is not a parameter value"
+
+
+_CONDITION_TYPES = ("bool", "int", "double", "string")
+
+
+def _typed_leaf(found: Found) -> tuple[dict[str, Any] | None, str]:
+    """The leaf's type, and its default or ``optional``, as rclpy would declare it."""
+    descriptor = descriptor_of(found)
+    value = found.value.value
+    dynamic = descriptor is not None and bool(descriptor.fields.get("dynamic_typing"))
+    if isinstance(value, TypeMarker):
+        if value.schema_type == "not_set":
+            return None, "Parameter.Type.NOT_SET: rclpy refuses it as a static type"
+        if dynamic:
+            return None, "a type with dynamic_typing=True: rclpy refuses it"
+        return {"type": value.schema_type, "optional": True}, ""
+    by_name_only = found.descriptor.value is None and found.descriptor.problem is None
+    if dynamic or (value is None and by_name_only):
+        if value is None:  # declared by name only, or with dynamic_typing and no value
+            return {"type": "any", "optional": True}, ""
+        schema_type, problem = _schema_type(value)
+        if schema_type is None:
+            return None, problem
+        if schema_type == "byte_array":
+            return None, "an empty list as a dynamically typed value: a schema cannot default to it"
+        return {"type": "any", "default": _default(value)}, ""
+    schema_type, problem = _schema_type(value)
+    if schema_type is None:
+        return None, problem
+    return {"type": schema_type, "default": _default(value)}, ""
+
+
+def _per_item_place(name: str) -> str:
+    return "parameters of the top level" if name == "*" else f"the parameters of {name!r}"
+
+
+def _item_prefix(found: Found) -> str | None:
+    """``joint`` -> "", ``f"offsets.{joint}"`` or ``"offsets." + joint`` -> "offsets": the
+    name of a per-item parameter before its item; None for any other name."""
+    variable = found.loop_variable
+    if variable is None or found.loop_parameter is None:
+        return None
+    parts = _name_parts(found.name_node)
+    if not parts or parts[-1] is not None or any(p is None for p in parts[:-1]):
+        return None
+    head = "".join(p for p in parts[:-1] if p is not None)
+    if head == "":
+        return "" if _uses(found.name_node, variable) else None
+    if not head.endswith(".") or not is_ros_name(head[:-1]):
+        return None
+    return head[:-1] if _uses(found.name_node, variable) else None
+
+
+def _name_parts(node: ast.AST | None) -> list[str | None] | None:
+    """A name as literal text and the loop variable (None), or None when it is more."""
+    if isinstance(node, ast.Name):
+        return [None]
+    if isinstance(node, ast.Constant) and isinstance(node.value, str):
+        return [node.value]
+    if isinstance(node, ast.JoinedStr):
+        out: list[str | None] = []
+        for part in node.values:
+            if isinstance(part, ast.Constant) and isinstance(part.value, str):
+                out.append(part.value)
+            elif (
+                isinstance(part, ast.FormattedValue)
+                and part.conversion == -1
+                and part.format_spec is None
+                and isinstance(part.value, ast.Name)
+            ):
+                out.append(None)
+            else:
+                return None
+        return out
+    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
+        left, right = _name_parts(node.left), _name_parts(node.right)
+        return None if left is None or right is None else left + right
+    return None
+
+
+def _uses(node: ast.AST | None, variable: str) -> bool:
+    """Whether every name in ``node`` is ``variable`` and there is one."""
+    names = [n.id for n in ast.walk(node) if isinstance(n, ast.Name)] if node else []
+    return bool(names) and all(n == variable for n in names)
+
+
+def _condition_value(kind: str, value: Any) -> Any:
+    """``value`` as a value of the condition's parameter type, or None."""
+    if kind == "bool":
+        return value if isinstance(value, bool) else None
+    if kind == "int":
+        return value if isinstance(value, int) and not isinstance(value, bool) else None
+    if kind == "double":
+        ok = isinstance(value, (int, float)) and not isinstance(value, bool)
+        return float(value) if ok else None
+    return value if isinstance(value, str) else None
 
 
 def _default(value: Any) -> Any:

@@ -1,7 +1,8 @@
 """The node's source, changed to use the generated class: a unified diff.
 
 - Declarations the schema now holds go: a statement that only declares is
-  removed (a loop over literal items that only declares, too); the first one
+  removed (a loop over literal items, a loop over a parameter's items or an
+  ``if`` on a parameter's value that only declares, too); the first one
   becomes ``self.params = XParams.declare(self)``.
 - A declaration whose result is used becomes a read: ``.value`` -> the typed
   read ``self.params.a.b``; anything else -> ``self.get_parameter('a.b')``
@@ -132,9 +133,14 @@ class _Patcher:
     def patchable(self) -> dict[ast.stmt, list[Found]]:
         """Statements to rewrite (declaring statements, or loops over literal items), each
         with its declarations; only when every declaration they make was imported."""
+        outcomes: dict[int, list[str]] = {}
+        for found, outcome in self.node.imported.outcome:
+            outcomes.setdefault(id(found.statement), []).append(outcome)
         groups: dict[ast.stmt, list[tuple[Found, str]]] = {}
         for found, outcome in self.node.imported.outcome:
-            statement: ast.stmt = found.literal_loop or found.statement
+            statement: ast.stmt = (
+                found.literal_loop or self.enclosing(found, outcomes) or found.statement
+            )
             groups.setdefault(statement, []).append((found, outcome))
         out = {}
         for statement, items in groups.items():
@@ -147,6 +153,19 @@ class _Patcher:
                 continue
             out[statement] = [f for f, _ in items]
         return out
+
+    def enclosing(self, found: Found, outcomes: dict[int, list[str]]) -> ast.stmt | None:
+        """The loop over a parameter's value, or the ``if`` on one, around a declaration,
+        when it only declares parameters the schema now holds (per-item, conditional):
+        it goes whole."""
+        parent = self.parents.get(found.statement)
+        if not isinstance(parent, (ast.For, ast.If)) or found.statement not in parent.body:
+            return None
+        if not _only_declares(parent):
+            return None
+        if any(LEFT_OUT in outcomes.get(id(s), [LEFT_OUT]) for s in parent.body):
+            return None
+        return parent
 
     def keep_left_out(self, statement: ast.stmt, items: list[tuple[Found, str]]) -> None:
         """A declare_parameters statement whose list is imported in part keeps the rest."""
@@ -178,7 +197,7 @@ class _Patcher:
 
     def rewrite(self, statement: ast.stmt, founds: list[Found]) -> bool:
         """Rewrite one statement; True when it is removed."""
-        if isinstance(statement, ast.For) or (
+        if isinstance(statement, (ast.For, ast.If)) or (
             isinstance(statement, ast.Expr) and statement.value is founds[0].call
         ):
             self.remove(statement)
@@ -333,16 +352,16 @@ def _self_calls(root: ast.AST, method: str) -> Iterator[ast.Call]:
             yield node
 
 
-def _only_declares(loop: ast.For) -> bool:
+def _only_declares(block: ast.For | ast.If) -> bool:
     return (
         all(
             isinstance(s, ast.Expr)
             and isinstance(s.value, ast.Call)
             and isinstance(s.value.func, ast.Attribute)
             and s.value.func.attr.startswith("declare_parameter")
-            for s in loop.body
+            for s in block.body
         )
-        and not loop.orelse
+        and not block.orelse
     )
 
 

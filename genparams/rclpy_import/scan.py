@@ -21,6 +21,7 @@ from genparams.rclpy_import.values import (
     Evaluator,
     Scope,
     UntranslatableError,
+    dotted_name,
     unparsed,
 )
 
@@ -61,6 +62,16 @@ class Found:
     nested: str | None = None  # "a lambda" when declared inside one
     literal_loop: ast.For | None = None  # the outermost loop over literal items expanding it
     in_list: bool = False  # an item of a declare_parameters list
+    name_node: ast.AST | None = None  # the name argument, as written
+    # The loop read at run time, when it is the only one and runs over one parameter's
+    # value (``for joint in self.get_parameter('joints').value``): that parameter, and
+    # the loop variable.
+    loop_parameter: str | None = None
+    loop_variable: str | None = None
+    # The condition, when it is one ``if`` comparing one parameter's value with a literal
+    # (``==`` or ``in``) and the declaration sits in its body: the parameter and the
+    # values that declare it.
+    when: tuple[str, list[Any]] | None = None
 
     @property
     def receiver_is_self(self) -> bool:
@@ -177,6 +188,9 @@ class _Context:
     loop_targets: frozenset[str] = frozenset()
     nested: str | None = None
     literal_loop: ast.For | None = None
+    loop_parameter: str | None = None
+    loop_variable: str | None = None
+    when: tuple[str, list[Any]] | None = None
 
 
 class _Scanner:
@@ -202,20 +216,26 @@ class _Scanner:
         if isinstance(statement, (ast.For, ast.AsyncFor)):
             self.loop(statement, scope, context)
         elif isinstance(statement, ast.While):
-            inner = _replace(context, runtime_loop=context.runtime_loop or "a while loop")
+            inner = _replace(
+                context, runtime_loop=context.runtime_loop or "a while loop", loop_parameter=None
+            )
             self.walk(statement.body, scope, inner)
             self.walk(statement.orelse, scope, context)
         elif isinstance(statement, ast.If):
             inner = _replace(
-                context, condition=context.condition or f"if {unparsed(statement.test)}"
+                context,
+                condition=context.condition or f"if {unparsed(statement.test)}",
+                when=_when(statement.test, scope) if context.condition is None else None,
             )
             self.expressions(statement.test, statement, scope, context)
             self.walk(statement.body, scope, inner)
-            self.walk(statement.orelse, scope, inner)
+            self.walk(statement.orelse, scope, _replace(inner, when=None))
         elif isinstance(statement, (ast.Try, ast.TryStar)):
             self.walk(statement.body, scope, context)
             for handler in statement.handlers:
-                inner = _replace(context, condition=context.condition or "an except handler")
+                inner = _replace(
+                    context, condition=context.condition or "an except handler", when=None
+                )
                 self.walk(handler.body, scope, inner)
             self.walk(statement.orelse, scope, context)
             self.walk(statement.finalbody, scope, context)
@@ -226,7 +246,7 @@ class _Scanner:
         elif isinstance(statement, ast.Match):
             self.expressions(statement.subject, statement, scope, context)
             for case in statement.cases:
-                inner = _replace(context, condition=context.condition or "a match case")
+                inner = _replace(context, condition=context.condition or "a match case", when=None)
                 self.walk(case.body, scope, inner)
         elif isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
             inner = _replace(context, nested=f"the nested definition {statement.name}")
@@ -253,10 +273,15 @@ class _Scanner:
                 self.walk(loop.body, scope.with_loop(binding), inner)
         else:
             targets = frozenset(n.id for n in ast.walk(loop.target) if isinstance(n, ast.Name))
+            first = context.runtime_loop is None and isinstance(loop.target, ast.Name)
             inner = _replace(
                 context,
                 runtime_loop=context.runtime_loop or unparsed(loop.iter),
                 loop_targets=context.loop_targets | targets,
+                loop_parameter=parameter_read(loop.iter, scope) if first else None,
+                loop_variable=loop.target.id
+                if first and isinstance(loop.target, ast.Name)
+                else None,
             )
             self.walk(loop.body, scope, inner)
         self.walk(loop.orelse, scope, context)
@@ -359,6 +384,10 @@ class _Scanner:
             name_is_item=isinstance(name_node, ast.Name) and name_node.id in context.loop_targets,
             nested=context.nested,
             literal_loop=context.literal_loop,
+            name_node=name_node,
+            loop_parameter=context.loop_parameter,
+            loop_variable=context.loop_variable,
+            when=context.when,
         )
         self.unit.found.append(found)
         return found
@@ -366,6 +395,77 @@ class _Scanner:
 
 def _replace(context: _Context, **changes: Any) -> _Context:
     return _Context(**{**context.__dict__, **changes})
+
+
+def _when(test: ast.expr, scope: Scope) -> tuple[str, list[Any]] | None:
+    """``read == literal``, ``literal == read`` or ``read in (literals)``: the parameter
+    read and the values that make the test true; None for any other test."""
+    if not isinstance(test, ast.Compare) or len(test.ops) != 1:
+        return None
+    left, right, op = test.left, test.comparators[0], test.ops[0]
+    if isinstance(op, ast.Eq) and parameter_read(left, scope) is None:
+        left, right = right, left
+    name = parameter_read(left, scope)
+    if name is None or not isinstance(op, (ast.Eq, ast.In)):
+        return None
+    try:
+        value = Evaluator(scope).value(right)
+    except UntranslatableError:
+        return None
+    if isinstance(op, ast.Eq):
+        return name, [value]
+    return (name, list(value)) if isinstance(value, (list, tuple)) and value else None
+
+
+_READS = ("get_parameter", DECLARE_ONE)
+_MAX_READS = 4  # variables assigned from variables assigned from a read
+
+
+def parameter_read(node: ast.AST, scope: Scope, depth: int = 0) -> str | None:
+    """The parameter whose value ``node`` is: ``x.get_parameter('a').value`` (or
+    ``.get_parameter_value().string_array_value``, or the value a ``declare_parameter``
+    returns), or a variable (``v``, ``self.v``) the function assigns once, from one,
+    before this use."""
+    call: ast.AST | None = None
+    if isinstance(node, ast.Attribute) and node.attr == "value":
+        call = node.value
+    elif isinstance(node, ast.Attribute) and node.attr.endswith("_value"):
+        inner = node.value
+        if (
+            isinstance(inner, ast.Call)
+            and isinstance(inner.func, ast.Attribute)
+            and inner.func.attr == "get_parameter_value"
+            and not inner.args
+        ):
+            call = inner.func.value
+    if (
+        isinstance(call, ast.Call)
+        and isinstance(call.func, ast.Attribute)
+        and call.func.attr in _READS
+        and call.args
+    ):
+        try:
+            name = Evaluator(scope).value(call.args[0])
+        except UntranslatableError:
+            return None
+        return name if isinstance(name, str) else None
+    key = dotted_name(node)
+    if key is None or depth >= _MAX_READS or key.count(".") > 1:
+        return None
+    if "." in key and not key.startswith("self."):
+        return None
+    assigned = scope.local.get(key, [])
+    if len(assigned) != 1 or not _ends_before(assigned[0], node):
+        return None
+    statement = assigned[0]
+    if not isinstance(statement, ast.Assign) or len(statement.targets) != 1:
+        return None
+    return parameter_read(statement.value, scope, depth + 1)
+
+
+def _ends_before(statement: ast.stmt, use: ast.AST) -> bool:
+    end = (statement.end_lineno or statement.lineno, statement.end_col_offset or 0)
+    return end <= (getattr(use, "lineno", 0), getattr(use, "col_offset", 0))
 
 
 def _calls(node: ast.AST, nested: str | None) -> Iterator[tuple[ast.Call, str | None]]:

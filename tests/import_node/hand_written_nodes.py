@@ -59,11 +59,19 @@ def driver(name: str) -> Node:
 
 
 def dynamic(name: str) -> Node:
-    """What a schema cannot state yet: dynamic typing and a declaration by type only."""
+    """Dynamic typing, with a value and without, and declarations by type only."""
     node = Node(name)
     node.declare_parameter("gain", 2.0, ParameterDescriptor(description="Gain."))
     node.declare_parameter("anything", 1, ParameterDescriptor(dynamic_typing=True))
+    node.declare_parameter(
+        "extra", descriptor=ParameterDescriptor(dynamic_typing=True, description="Free.")
+    )
     node.declare_parameter("robot_ip", Parameter.Type.STRING)
+    node.declare_parameter(
+        "frames",
+        Parameter.Type.STRING_ARRAY,
+        ParameterDescriptor(description="Frames to watch.", read_only=True),
+    )
     return node
 
 

@@ -10,7 +10,9 @@ from typing import Any
 
 import pytest
 import yaml
+from rclpy.parameter import parameter_value_to_python
 
+from genparams.runtime.naming import NODE_PARAMETERS
 from tests.support import ROOT, RosHarness, ServiceClient, load_generated
 from tests.tune.support import demo_nodes, unique
 
@@ -34,18 +36,33 @@ def _values(values: list[Any]) -> list[Any]:
     return [list(v) if isinstance(v, (list, tuple)) or hasattr(v, "tolist") else v for v in values]
 
 
-def test_generated_class_reproduces_every_descriptor(ros: RosHarness, tmp_path: Path) -> None:
-    node = f"/{unique('driver')}"
-    with demo_nodes(f"{node[1:]}:driver", module=NODES):
-        done = import_node(node, "-o", str(tmp_path / "driver.yaml"))
+def _one_by_one(client: ServiceClient, names: list[str]) -> list[Any]:
+    """Each value alone: rclpy answers a get naming a parameter not set with no values."""
+    out = []
+    for name in names:
+        response = client.harness.wait(client.client.get_parameters([name]))
+        out.append(_values([parameter_value_to_python(v) for v in response.values]))
+    return out
+
+
+@pytest.mark.parametrize(
+    "kind, parameters",
+    [("driver", 12), ("dynamic", 5)],
+)
+def test_generated_class_reproduces_every_descriptor(
+    kind: str, parameters: int, ros: RosHarness, tmp_path: Path
+) -> None:
+    node = f"/{unique(kind)}"
+    with demo_nodes(f"{node[1:]}:{kind}", module=NODES):
+        done = import_node(node, "-o", str(tmp_path / f"{kind}.yaml"))
         assert done.returncode == 0, done.stderr
         remote = ServiceClient(ros, node)
-        names = sorted(n for n in _list(remote) if n not in ("use_sim_time",))
-        names = [n for n in names if n != "start_type_description_service"]
+        names = sorted(n for n in _list(remote) if n not in NODE_PARAMETERS)
         theirs = remote.describe(*names)
-        their_values = remote.get(*names)
-    assert "imported 12 of 12 parameters" in done.stderr
-    module = load_generated(tmp_path / "driver.yaml", tmp_path)
+        their_values = _one_by_one(remote, names)
+    assert f"imported {parameters} of {parameters} parameters" in done.stderr
+    assert len(names) == parameters
+    module = load_generated(tmp_path / f"{kind}.yaml", tmp_path)
     fresh = ros.node()
     cls = next(v for k, v in vars(module).items() if k.endswith("Params") and hasattr(v, "_SPEC"))
     cls.declare(fresh)
@@ -55,7 +72,7 @@ def test_generated_class_reproduces_every_descriptor(ros: RosHarness, tmp_path: 
         for field in FIELDS:
             assert getattr(mine, field) == getattr(original_descriptor, field), (name, field)
         assert _ranges(mine) == _ranges(original_descriptor), name
-    assert _values(client.get(*names)) == _values(their_values)
+    assert _one_by_one(client, names) == their_values
 
 
 def _list(client: Any) -> list[str]:
@@ -63,19 +80,24 @@ def _list(client: Any) -> list[str]:
     return list(response.result.names)
 
 
-def test_what_has_no_schema_form_is_a_warning_and_left_out(tmp_path: Path) -> None:
+def test_optional_and_dynamically_typed_parameters_import_as_such(tmp_path: Path) -> None:
     node = f"/{unique('dynamic')}"
     with demo_nodes(f"{node[1:]}:dynamic", module=NODES):
         done = import_node(node)
-    assert done.returncode == 1
-    assert f"{node}: anything: warning: dynamic_typing has no schema form yet: left out" in (
-        done.stderr
-    )
-    assert f"{node}: robot_ip: warning: declared by type only" in done.stderr
-    assert "imported 1 of 3 parameters; 2 left out (see warnings)" in done.stderr
+    assert done.returncode == 0, done.stderr
+    assert "warning" not in done.stderr
     schema = yaml.safe_load(done.stdout)
     assert schema["parameters"] == {
-        "gain": {"type": "double", "default": 2.0, "description": "Gain."}
+        "gain": {"type": "double", "default": 2.0, "description": "Gain."},
+        "anything": {"type": "any", "default": 1},
+        "extra": {"type": "any", "optional": True, "description": "Free."},
+        "robot_ip": {"type": "string", "optional": True},
+        "frames": {
+            "type": "string_array",
+            "optional": True,
+            "description": "Frames to watch.",
+            "read_only": True,
+        },
     }
 
 

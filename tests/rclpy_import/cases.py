@@ -27,6 +27,7 @@ CASES = [
     Case("camera_driver", "camera_driver.py", None, 0),
     Case("key_teleop", "key_teleop.py", None, 0),
     Case("legacy_bridge", "legacy_bridge.py", None, 1),
+    Case("planner", "planner.py", None, 0),
     Case("serial_driver", "serial_driver.py", None, 0, declare="declare"),
     Case("two_nodes_service", "two_nodes.py", "ServiceNode", 0),
 ]
@@ -34,5 +35,6 @@ CLASSES = {
     "camera_driver": "CameraDriverNode",
     "key_teleop": "KeyTeleop",
     "legacy_bridge": "LegacyBridge",
+    "planner": "PlannerNode",
     "two_nodes_service": "ServiceNode",
 }

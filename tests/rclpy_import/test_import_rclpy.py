@@ -9,6 +9,7 @@ import shutil
 import subprocess
 import sys
 from pathlib import Path
+from typing import Any
 
 import pytest
 import yaml
@@ -52,23 +53,26 @@ def test_every_untranslatable_construct_is_a_warning_at_its_place(
     lines = err.splitlines()
     expected = {
         "legacy_bridge.py:14:43: warning: allow_undeclared_parameters=True": "open groups",
-        "legacy_bridge.py:16:32: serial: warning: type-only": "optional parameter",
-        "legacy_bridge.py:20:17: port: warning: type-only": "optional parameter",
-        "legacy_bridge.py:24:32: anything: warning: dynamic_typing=True": "dynamic typing",
         "legacy_bridge.py:25:32: home: warning: value computed": "environment",
         "legacy_bridge.py:27:13: limit: warning: descriptor field description": "imported",
         "legacy_bridge.py:30:13: retries: warning: integer_range on a double": "imported",
-        "legacy_bridge.py:35:36: fast_mode: warning: declared only under": "conditional",
-        "legacy_bridge.py:38:36: warning: one parameter per item": "per-item parameters",
-        "legacy_bridge.py:39:36: warning: one parameter per item": "computed from the item",
+        "legacy_bridge.py:35:36: fast_mode: warning: declared only under": "== or in",
+        "legacy_bridge.py:39:36: warning: one parameter per item": "ends with the item",
         "legacy_bridge.py:46:9: warning: set_descriptor() changes a descriptor": "declared one",
     }
     for start, word in expected.items():
         assert any(line.startswith(start) and word in line for line in lines), start
-    assert lines[-1] == "imported 5 of 12 parameters (2 approximately); 7 left out (see warnings)"
+    assert len([line for line in lines if ": warning: " in line]) == len(expected)
+    assert lines[-1] == "imported 9 of 12 parameters (2 approximately); 3 left out (see warnings)"
     assert "one parameter per item of self.get_parameter('joints').value, its name computed" in err
     written = yaml.safe_load((tmp_path / "s.yaml").read_text("utf-8"))
-    assert sorted(written["parameters"]) == ["baud", "joints", "limit", "rate", "retries"]
+    assert written["parameters"]["serial"] == {"type": "string", "optional": True}
+    assert written["parameters"]["port"] == {"type": "int", "optional": True}
+    assert written["parameters"]["anything"] == {"type": "any", "default": 1}
+    assert written["parameters"]["*"] == {"type": "double", "default": 0.0, "for_each": "joints"}
+    assert sorted(written["parameters"]) == [
+        "*", "anything", "baud", "joints", "limit", "port", "rate", "retries", "serial"
+    ]  # fmt: skip
 
 
 def test_stdout_without_output(capsys: pytest.CaptureFixture[str]) -> None:
@@ -204,3 +208,125 @@ def test_a_statement_declaring_several_stays_whole_when_one_is_left_out(
     if shutil.which("patch"):
         subprocess.run(["patch", "-p0", "--quiet"], input=diff, text=True, check=True)
         assert source.read_text("utf-8").endswith("        self.params = MParams.declare(self)\n")
+
+
+def _imported(tmp_path: Path, body: str, capsys: pytest.CaptureFixture[str]) -> tuple[Any, str]:
+    """The schema and messages of a class whose ``__init__`` is ``body``."""
+    source = tmp_path / "node.py"
+    lines = "".join(f"        {line}\n" for line in body.strip("\n").splitlines())
+    source.write_text(f"class N:\n    def __init__(self):\n{lines}", encoding="utf-8")
+    code, out, err = run(capsys, str(source))
+    assert code in (0, 1), err
+    return (yaml.safe_load(out)["parameters"] if out else {}), err
+
+
+def test_conditions_and_loops_read_through_variables(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    parameters, err = _imported(
+        tmp_path,
+        """
+mode = self.declare_parameter('mode', 'fast').value
+names = self.get_parameter_or('x', None)
+self.declare_parameter('scale', 1.5)
+wheels = self.declare_parameter('wheels', ['left', 'right']).value
+for wheel in wheels:
+    self.declare_parameter('radius.' + wheel, 0.1)
+if mode == 'fast':
+    self.declare_parameter('boost', True)
+if self.get_parameter('scale').value in [1, 2.5]:
+    self.declare_parameter('note', 'x')
+""",
+        capsys,
+    )
+    assert "warning" not in err
+    assert parameters["radius"] == {"type": "double", "default": 0.1, "for_each": "wheels"}
+    assert parameters["boost"]["when"] == {"mode": "fast"}
+    assert parameters["note"]["when"] == {"scale": [1.0, 2.5]}
+
+
+@pytest.mark.parametrize(
+    "body, message",
+    [
+        (  # an else branch: when cannot say "not"
+            "self.declare_parameter('on', True)\n"
+            "if self.get_parameter('on').value == True:\n    pass\n"
+            "else:\n    self.declare_parameter('x', 1)",
+            "declared only under a condition (if self.get_parameter('on').value == True): "
+            "only == or in",
+        ),
+        (  # another comparison
+            "self.declare_parameter('n', 1)\nif self.get_parameter('n').value > 0:\n"
+            "    self.declare_parameter('x', 1)",
+            "only == or in",
+        ),
+        (  # a parameter not imported before
+            "if self.get_parameter('later').value == 1:\n    self.declare_parameter('x', 1)\n"
+            "self.declare_parameter('later', 1)",
+            "'later' is not a parameter imported before it",
+        ),
+        (  # a value of another type
+            "self.declare_parameter('n', 1)\nif self.get_parameter('n').value == 'a':\n"
+            "    self.declare_parameter('x', 1)",
+            "a value compared with 'n' is not a int",
+        ),
+        (  # an optional parameter decides nothing at startup
+            "self.declare_parameter('n', Parameter.Type.INTEGER)\n"
+            "if self.get_parameter('n').value == 1:\n    self.declare_parameter('x', 1)",
+            "'n' must be a bool, int, double or string parameter with a value",
+        ),
+        (  # a variable assigned twice
+            "self.declare_parameter('n', 1)\nv = self.get_parameter('n').value\nv = 2\n"
+            "if v == 1:\n    self.declare_parameter('x', 1)",
+            "only == or in",
+        ),
+        (  # a loop over a list that is not a string_array parameter
+            "self.declare_parameter('ids', [1, 2])\n"
+            "for i in self.get_parameter('ids').value:\n    self.declare_parameter(f'w.{i}', 1)",
+            "must run over a string_array parameter declared before it",
+        ),
+        (  # a per-item parameter under a condition
+            "self.declare_parameter('on', True)\nself.declare_parameter('js', ['a'])\n"
+            "if self.get_parameter('on').value == True:\n"
+            "    for j in self.get_parameter('js').value:\n        self.declare_parameter(j, 1)",
+            "a per-item parameter has no when",
+        ),
+        (  # a name with more after the item
+            "self.declare_parameter('js', ['a'])\nfor j in self.get_parameter('js').value:\n"
+            "    self.declare_parameter(f'{j}.gain', 1.0)",
+            "only a name that ends with the item translates",
+        ),
+        (  # a per-item parameter with no value: optional has no per-item form
+            "self.declare_parameter('js', ['a'])\nfor j in self.get_parameter('js').value:\n"
+            "    self.declare_parameter('x.' + j)",
+            "with no value: a per-item parameter needs one",
+        ),
+        (
+            "self.declare_parameter('x', Parameter.Type.INTEGER, "
+            "ParameterDescriptor(dynamic_typing=True))",
+            "a type with dynamic_typing=True: rclpy refuses it",
+        ),
+        ("self.declare_parameter('x', [], ParameterDescriptor(dynamic_typing=True))", "empty list"),
+    ],
+)
+def test_what_the_new_features_cannot_state_stays_a_warning(
+    body: str, message: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    parameters, err = _imported(tmp_path, body, capsys)
+    assert message in err
+    assert "x" not in parameters
+
+
+def test_declared_by_name_only_is_dynamically_typed_and_optional(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    parameters, err = _imported(
+        tmp_path,
+        "self.declare_parameter('free')\n"
+        "self.declare_parameter('scale', 0.5, ParameterDescriptor(dynamic_typing=True, "
+        "floating_point_range=[FloatingPointRange(from_value=0.0, to_value=1.0)]))",
+        capsys,
+    )
+    assert parameters["free"] == {"type": "any", "optional": True}
+    assert parameters["scale"] == {"type": "any", "default": 0.5}
+    assert "floating_point_range on a dynamically typed parameter" in err
