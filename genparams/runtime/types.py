@@ -14,6 +14,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, ClassVar, TypeAlias
 
+from genparams.runtime.errors import GenparamsError
+
 RosValue: TypeAlias = (
     bool
     | int
@@ -26,8 +28,6 @@ RosValue: TypeAlias = (
     | tuple[str, ...]
 )
 """The typed-view value of a parameter of type ``any``: any of the nine types' values."""
-
-from genparams.runtime.errors import GenparamsError
 
 INT64_MIN = -(2**63)
 INT64_MAX = 2**63 - 1
