@@ -25,11 +25,13 @@ from dataclasses import dataclass
 from itertools import accumulate
 from typing import Any
 
+from genparams.runtime.errors import GenparamsError
+
 FLOAT_TAG = "$float"
 _FLOAT_NAMES = {"nan": math.nan, "inf": math.inf, "-inf": -math.inf}
 
 
-class JsonError(ValueError):
+class JsonError(GenparamsError, ValueError):
     """Text that is not JSON genparams reads: the message names the rule it breaks."""
 
 

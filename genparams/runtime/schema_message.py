@@ -14,6 +14,7 @@ from collections.abc import Collection, Mapping
 from dataclasses import dataclass
 from typing import Any
 
+from genparams.runtime.errors import GenparamsError
 from genparams.runtime.json_codec import JsonError, Limits, loads
 from genparams.runtime.naming import ENTRY_KEY, strip_prefix
 from genparams.runtime.schema_topic import FORMAT_VERSION
@@ -33,7 +34,7 @@ class SchemaProblem:
     detail: str
 
 
-class _ShapeError(ValueError):
+class _ShapeError(GenparamsError, ValueError):
     pass
 
 

@@ -15,12 +15,13 @@ from typing import Any
 
 from rclpy.parameter import Parameter
 
+from genparams.runtime.errors import GenparamsError
 from genparams.runtime.json_codec import API_LIMITS, JsonError, loads
 from genparams.runtime.naming import absolute, node_name_problem
 from genparams.tune.checking import json_parameter
 
 
-class RequestError(ValueError):
+class RequestError(GenparamsError, ValueError):
     """A request the API cannot take; its text says why."""
 
 

@@ -30,6 +30,7 @@ from urllib.parse import parse_qs
 
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
+from genparams.runtime.errors import GenparamsError
 from genparams.runtime.json_codec import API_LIMITS, dumps
 
 LOG = logging.getLogger("genparams.tune")
@@ -138,7 +139,7 @@ def cookie_name(port: int | None) -> str:
     return f"genparams-tune-{port or 80}"
 
 
-class RefusedError(Exception):
+class RefusedError(GenparamsError):
     def __init__(self, status: int, reason: str) -> None:
         super().__init__(reason)
         self.status = status
