@@ -87,7 +87,11 @@ def graph_with_hostiles(tmp_path_factory: pytest.TempPathFactory) -> Iterator[No
             yield
         finally:
             hostile.terminate()
-            hostile.wait(timeout=10)
+            try:
+                hostile.wait(timeout=30)
+            except subprocess.TimeoutExpired:  # a loaded machine: stop it the hard way
+                hostile.kill()
+                hostile.wait()
 
 
 @pytest.fixture(scope="module")
