@@ -175,7 +175,17 @@ def test_the_audit_reports_each_bad_schema_and_the_good_node_fine(
     graph_with_hostiles: None,
 ) -> None:
     nodes = [CAM, *EXPECTED]
-    command = [sys.executable, "-m", "genparams", "audit", "--format", "json", *nodes]
+    command = [
+        sys.executable,
+        "-m",
+        "genparams",
+        "audit",
+        "--format",
+        "json",
+        "--timeout",
+        "30",
+        *nodes,
+    ]
     done = subprocess.run(
         command, cwd=ROOT, capture_output=True, text=True, timeout=120, env=dict(os.environ)
     )
