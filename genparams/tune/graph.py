@@ -51,6 +51,9 @@ from genparams.tune.reader import (
 
 LOG = logging.getLogger("genparams.tune")
 SWEEP_SECONDS = 1.0
+# A node asked for before discovery has told of it keeps its clients this long: a node
+# started a moment ago may take seconds to appear on a loaded machine.
+UNSEEN_GRACE_SECONDS = 60.0
 SCHEMA_QOS = QoSProfile(
     depth=1,
     history=HistoryPolicy.KEEP_LAST,
@@ -93,6 +96,8 @@ class Graph:
         self.subscribed: set[str] = set()
         self.schema_subscriptions: dict[str, Subscription] = {}
         self.absent: set[str] = set()  # nodes the last sweep found gone (see sweep)
+        self.seen: set[str] = set()  # held nodes some sweep found in the graph
+        self.asked: dict[str, float] = {}  # held node -> when its first client was made
         self.quiet: set[str] = set()  # schema topics it found without a publisher
         self.readers: dict[str, ParameterReader] = {}
         self.setters: dict[str, AsyncParameterClient] = {}
@@ -159,15 +164,25 @@ class Graph:
         """Let go of what nodes that left the graph held: service clients, schemas, topics.
 
         A node or topic gone at two sweeps in a row is gone (one sweep could race a
-        client made for a node discovered meanwhile). Without this, every node name
-        ever asked for would keep its clients, and node churn would grow the server.
+        client made for a node discovered meanwhile). A node not discovered yet is not
+        gone: its clients stay until it has been seen (by a sweep, or when they were
+        made), or for ``UNSEEN_GRACE_SECONDS``.
+        Without this, every node name ever asked for would keep its clients, and node
+        churn would grow the server.
         """
         present = set(self.node_names())
+        now = time.monotonic()
         with self.lock:
             held = {*self.readers, *self.setters, *self.schemas}
             topics = list(self.schema_subscriptions)
+            self.seen = (self.seen & held) | (present & held)
+            seen, asked = set(self.seen), dict(self.asked)
         quiet = {t for t in topics if self.node.count_publishers(t) == 0}
-        gone = {n for n in held if n not in present}
+        gone = {
+            n
+            for n in held
+            if n not in present and (n in seen or now - asked.get(n, now) > UNSEEN_GRACE_SECONDS)
+        }
         gone_nodes, self.absent = gone & self.absent, gone
         gone_topics, self.quiet = quiet & self.quiet, quiet
         for topic in gone_topics:
@@ -179,6 +194,8 @@ class Graph:
             self.forget(name)
             with self.lock:
                 self.schemas.pop(name, None)
+                self.seen.discard(name)
+                self.asked.pop(name, None)
 
     def writers(self, node_name: str) -> dict[bytes, str | None]:
         """The publishers on a node's schema topic: endpoint gid -> node name (None: unknown)."""
@@ -194,6 +211,7 @@ class Graph:
             read, writers = SchemaProblem(f"schema message cannot be read: {exc!r}"), ()
         with self.lock:
             self.schemas[owner] = Received(read, writers)
+            self.asked.setdefault(owner, time.monotonic())
         self.dispatch({"kind": "schema", "node": owner})
 
     def schema_state(self, node_name: str) -> tuple[dict[str, Any] | None, str | None]:
@@ -243,13 +261,21 @@ class Graph:
             found = self.setters.get(node_name)
             if found is None:
                 found = self.setters[node_name] = AsyncParameterClient(self.node, node_name)
+                self.note_asked(node_name)
             return found
+
+    def note_asked(self, node_name: str) -> None:
+        """Remember when clients were first made for ``node_name``, and if it was there then."""
+        self.asked.setdefault(node_name, time.monotonic())
+        if node_name in self.node_names():
+            self.seen.add(node_name)
 
     def reader(self, node_name: str) -> ParameterReader:
         with self.lock:
             found = self.readers.get(node_name)
             if found is None:
                 found = self.readers[node_name] = ParameterReader(self.node, node_name)
+                self.note_asked(node_name)
             return found
 
     def forget(self, node_name: str) -> None:
