@@ -9,17 +9,20 @@ EXAMPLE := examples/camera_node
 
 .PHONY: venv lock test-latest browser demo import-node-demo demo-arm tour test check lint typecheck golden screenshots docs bench bench-targets bench-quick bench-profile soak mutate mutate-sample clean
 
-# The development environment installs from requirements/dev.lock (every pin with its
-# hashes, from PyPI only); uv itself comes from requirements/uv.lock. genparams goes in
-# editable, without dependencies of its own and without build isolation (hatchling is locked).
+# The development environment installs from uv.lock (every package of every extra, with
+# its hashes, from PyPI only), exported to a hashed requirements file and synced by uv;
+# uv itself comes from requirements/uv.txt (hashed). genparams goes in editable, without
+# dependencies of its own and without build isolation (hatchling is in the lock's `build` group).
 INDEX := --index-url https://pypi.org/simple
 UV := $(VENV)/bin/uv
 
-$(VENV)/.installed: pyproject.toml requirements/dev.lock requirements/uv.lock
+$(VENV)/.installed: pyproject.toml uv.lock requirements/uv.txt
 	rm -rf $(VENV)
 	python3 -m venv $(VENV)
-	$(PYTHON) -m pip install --quiet --require-hashes -r requirements/uv.lock
-	$(UV) pip sync --quiet --python $(PYTHON) --require-hashes $(INDEX) requirements/dev.lock
+	$(PYTHON) -m pip install --quiet --require-hashes -r requirements/uv.txt
+	$(UV) export --quiet --locked --all-extras --group build --no-emit-project \
+		--format requirements-txt -o $(VENV)/locked-requirements.txt
+	$(UV) pip sync --quiet --python $(PYTHON) --require-hashes $(INDEX) $(VENV)/locked-requirements.txt
 	$(UV) pip install --quiet --python $(PYTHON) --no-deps --no-build-isolation -e .
 	touch $@
 
@@ -28,19 +31,17 @@ venv: $(VENV)/.installed
 ## Refresh the locks on purpose: the newest releases that pyproject.toml's ranges admit.
 lock:
 	python3 -m venv build/lock-venv
-	build/lock-venv/bin/pip install --quiet --require-hashes -r requirements/uv.lock
+	build/lock-venv/bin/pip install --quiet --require-hashes -r requirements/uv.txt
+	build/lock-venv/bin/uv lock --upgrade $(INDEX)
 	build/lock-venv/bin/uv pip compile --quiet --upgrade --generate-hashes --universal \
-		--python-version 3.11 $(INDEX) --no-emit-package genparams \
-		-o requirements/dev.lock requirements/dev.in
-	build/lock-venv/bin/uv pip compile --quiet --upgrade --generate-hashes --universal \
-		--python-version 3.11 $(INDEX) -o requirements/uv.lock requirements/uv.in
+		--python-version 3.11 $(INDEX) -o requirements/uv.txt requirements/uv.in
 
 ## The whole suite against the newest releases (not the lock), in build/latest-venv:
 ## breakage by a new release shows here before `make lock` takes it in.
 test-latest: browser
 	rm -rf build/latest-venv
 	python3 -m venv build/latest-venv
-	build/latest-venv/bin/pip install --quiet --require-hashes -r requirements/uv.lock
+	build/latest-venv/bin/pip install --quiet --require-hashes -r requirements/uv.txt
 	build/latest-venv/bin/uv pip install --quiet --python build/latest-venv/bin/python \
 		--upgrade $(INDEX) -e ".[test,tune]"
 	build/latest-venv/bin/python -m pytest -q

@@ -1,7 +1,7 @@
 """genparams as users install it: the wheel's contents, a fresh venv, a lean runtime.
 
 The fresh venv holds the wheel without extras (`pip install genparams`), its dependencies
-pinned by requirements/dev.lock: the runtime and code generation, no web stack.
+pinned by uv.lock: the runtime and code generation, no web stack.
 """
 
 from __future__ import annotations
@@ -82,8 +82,10 @@ def venv(wheel: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:
     folder = tmp_path_factory.mktemp("fresh") / "venv"
     started = time.monotonic()
     run([sys.executable, "-m", "venv", "--without-pip", folder], folder.parent)
-    lock = ROOT / "requirements" / "dev.lock"
-    # uv comes with the development environment (requirements/uv.lock); its cache keeps it quick.
+    # uv comes with the development environment (requirements/uv.txt); its cache keeps it quick.
+    lock = folder.parent / "locked-requirements.txt"
+    export = ["export", "--quiet", "--locked", "--all-extras", "--no-emit-project", "-o", lock]
+    run([VENV_BIN / "uv", *export, "--project", ROOT], folder.parent)
     python = folder / "bin" / "python"
     install: list[str | Path] = [VENV_BIN / "uv", "pip", "install", "--quiet", "--python", python]
     run([*install, "--index-url", "https://pypi.org/simple", "--constraint", lock, wheel], folder)
