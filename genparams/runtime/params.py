@@ -5,17 +5,17 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from typing import TYPE_CHECKING, Any, ClassVar, Self
 
-from genparams.runtime.changes import Changes
-from genparams.runtime.entries import flatten, resolve_all
-from genparams.runtime.errors import DetachedSnapshotError, ParameterDeclarationError
-from genparams.runtime.spec import SchemaSpec, compile_schema
-from genparams.runtime.tree import Group, build_tree, to_dict
+from genparams.runtime.core.changes import Changes
+from genparams.runtime.core.entries import flatten, resolve_all
+from genparams.runtime.core.errors import DetachedSnapshotError, ParameterDeclarationError
+from genparams.runtime.core.spec import SchemaSpec, compile_schema
+from genparams.runtime.core.tree import Group, build_tree, to_dict
 
 if TYPE_CHECKING:
     from rclpy.node import Node
 
-    from genparams.runtime.binding import Binding
-    from genparams.runtime.remote import RemoteParams
+    from genparams.runtime.node.binding import Binding
+    from genparams.runtime.remote.client import RemoteParams
 
 
 class Params(Group):
@@ -35,11 +35,11 @@ class Params(Group):
         node describes itself on ``~/genparams/schema`` (a latched std_msgs/String
         of JSON, merged over every class declared on the node).
         """
-        from genparams.runtime.binding import Binding
+        from genparams.runtime.node.binding import Binding
 
         live = Binding.declare(cls, node, prefix).live
         if publish_schema:
-            from genparams.runtime.schema_topic import publish_schema as publish
+            from genparams.runtime.node.schema_topic import publish_schema as publish
 
             publish(node, compile_schema(cls._SPEC), prefix)
         return live
@@ -52,7 +52,7 @@ class Params(Group):
         ``get()``, ``set({...})`` and ``watch(callback)`` return rclpy Futures or a
         handle; ``set`` checks the values against the schema before sending.
         """
-        from genparams.runtime.remote import RemoteParams
+        from genparams.runtime.remote.client import RemoteParams
 
         return RemoteParams(cls, node, target, prefix)
 

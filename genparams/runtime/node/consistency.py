@@ -43,14 +43,14 @@ from rcl_interfaces.msg import SetParametersResult
 from rclpy.exceptions import ParameterImmutableException
 from rclpy.parameter import Parameter
 
-from genparams.runtime import rclpy_internals as internals
-from genparams.runtime.errors import GenparamsError
+from genparams.runtime.core.errors import GenparamsError
+from genparams.runtime.node import rclpy_internals as internals
 
 if TYPE_CHECKING:
     from rclpy.node import Node
 
-    from genparams.runtime.binding import Binding
-    from genparams.runtime.spec import CompiledParam
+    from genparams.runtime.core.spec import CompiledParam
+    from genparams.runtime.node.binding import Binding
 
 _ATTRIBUTE = "_genparams_sets"
 _INSTALLING = threading.Lock()

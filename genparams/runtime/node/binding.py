@@ -18,22 +18,13 @@ from typing import Any, Generic, TypeVar
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
-from genparams.runtime.aliases import Aliases, old_names_by_current
-from genparams.runtime.changes import Change, Changes
-from genparams.runtime.consistency import NodeSets, node_sets
-from genparams.runtime.declaring import declare_batch, descriptor_for, ros_parameter
-from genparams.runtime.deprecation import DeprecationWatch, Notices, report_overrides
-from genparams.runtime.entries import resolve_all
-from genparams.runtime.errors import ParameterDeclarationError
-from genparams.runtime.lifecycle import mutability_problem
-from genparams.runtime.mapped import EntryPlan, MappedEntries
-from genparams.runtime.naming import is_ros_token, join_prefix, strip_prefix
-from genparams.runtime.overrides import OverrideReader
-from genparams.runtime.params import Params
-from genparams.runtime.rewrites import add_rewrite, typed_empty_arrays
-from genparams.runtime.rule_check import broken_rules
-from genparams.runtime.spec import CompiledParam, compile_schema
-from genparams.runtime.tree import (
+from genparams.runtime.core.changes import Change, Changes
+from genparams.runtime.core.entries import resolve_all
+from genparams.runtime.core.errors import ParameterDeclarationError
+from genparams.runtime.core.naming import is_ros_token, join_prefix, strip_prefix
+from genparams.runtime.core.rule_check import broken_rules
+from genparams.runtime.core.spec import CompiledParam, compile_schema
+from genparams.runtime.core.tree import (
     build_tree,
     copy_node,
     field_names,
@@ -41,7 +32,16 @@ from genparams.runtime.tree import (
     replace_values,
     reuse_values,
 )
-from genparams.runtime.values import same_typed_value, same_value
+from genparams.runtime.core.values import same_typed_value, same_value
+from genparams.runtime.node.aliases import Aliases, old_names_by_current
+from genparams.runtime.node.consistency import NodeSets, node_sets
+from genparams.runtime.node.declaring import declare_batch, descriptor_for, ros_parameter
+from genparams.runtime.node.deprecation import DeprecationWatch, Notices, report_overrides
+from genparams.runtime.node.lifecycle import mutability_problem
+from genparams.runtime.node.mapped import EntryPlan, MappedEntries
+from genparams.runtime.node.overrides import OverrideReader
+from genparams.runtime.node.rewrites import add_rewrite, typed_empty_arrays
+from genparams.runtime.params import Params
 
 P = TypeVar("P", bound=Params)
 _NOT_SET = Parameter.Type.NOT_SET  # reading an Enum member costs on every set

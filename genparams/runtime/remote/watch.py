@@ -20,13 +20,13 @@ from rclpy.subscription import Subscription
 from rclpy.task import Future
 from rclpy.timer import Timer
 
-from genparams.runtime.changes import Change, Changes
-from genparams.runtime.entries import expand
+from genparams.runtime.core.changes import Change, Changes
+from genparams.runtime.core.entries import expand
+from genparams.runtime.core.spec import CompiledParam
+from genparams.runtime.core.tree import get_path, replace_values
+from genparams.runtime.core.types import ValueTypeError
 from genparams.runtime.params import Params
-from genparams.runtime.remote import RemoteParams, TypedFuture
-from genparams.runtime.spec import CompiledParam
-from genparams.runtime.tree import get_path, replace_values
-from genparams.runtime.types import ValueTypeError
+from genparams.runtime.remote.client import RemoteParams, TypedFuture
 
 P = TypeVar("P", bound=Params)
 

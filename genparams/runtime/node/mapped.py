@@ -34,19 +34,19 @@ from typing import TYPE_CHECKING, Any
 from rcl_interfaces.msg import SetParametersResult
 from rclpy.parameter import Parameter
 
-from genparams.runtime import rclpy_internals as internals
-from genparams.runtime.changes import Change
-from genparams.runtime.declaring import descriptor_for, replace_batch, ros_parameter
-from genparams.runtime.deprecation import Notices
-from genparams.runtime.entries import expand, key_slot, map_chain, open_maps, template_keys
-from genparams.runtime.naming import join_prefix, strip_prefix
-from genparams.runtime.overrides import OverrideReader
-from genparams.runtime.resolve import resolve_values
-from genparams.runtime.spec import CompiledParam, CompiledSchema
-from genparams.runtime.tree import get_path
+from genparams.runtime.core.changes import Change
+from genparams.runtime.core.entries import expand, key_slot, map_chain, open_maps, template_keys
+from genparams.runtime.core.naming import join_prefix, strip_prefix
+from genparams.runtime.core.resolve import resolve_values
+from genparams.runtime.core.spec import CompiledParam, CompiledSchema
+from genparams.runtime.core.tree import get_path
+from genparams.runtime.node import rclpy_internals as internals
+from genparams.runtime.node.declaring import descriptor_for, replace_batch, ros_parameter
+from genparams.runtime.node.deprecation import Notices
+from genparams.runtime.node.overrides import OverrideReader
 
 if TYPE_CHECKING:
-    from genparams.runtime.binding import Binding
+    from genparams.runtime.node.binding import Binding
 
 
 @dataclass(frozen=True)

@@ -5,9 +5,9 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from typing import TYPE_CHECKING, Any
 
-from genparams.runtime.rules import CompiledRule
-from genparams.runtime.spec import CompiledParam, compile_schema
-from genparams.runtime.tree import get_path
+from genparams.runtime.core.rules import CompiledRule
+from genparams.runtime.core.spec import CompiledParam, compile_schema
+from genparams.runtime.core.tree import get_path
 
 if TYPE_CHECKING:
     from genparams.runtime.params import Params

@@ -18,27 +18,27 @@ from rclpy.parameter import parameter_value_to_python
 from rclpy.parameter_client import AsyncParameterClient
 from rclpy.task import Future
 
-from genparams.runtime.binding import check_prefix
-from genparams.runtime.changes import Changes
-from genparams.runtime.declaring import ros_parameter
-from genparams.runtime.entries import (
+from genparams.runtime.core.changes import Changes
+from genparams.runtime.core.entries import (
     expand,
     instantiate,
     open_maps,
     override_keys,
     template_keys,
 )
-from genparams.runtime.errors import RemoteParameterError, RemoteSetError
-from genparams.runtime.naming import is_entry_key, join_prefix, strip_prefix
+from genparams.runtime.core.errors import RemoteParameterError, RemoteSetError
+from genparams.runtime.core.naming import is_entry_key, join_prefix, strip_prefix
+from genparams.runtime.core.spec import CompiledParam, compile_schema
+from genparams.runtime.core.suggest import did_you_mean
+from genparams.runtime.core.tree import build_tree
+from genparams.runtime.core.types import ValueTypeError
+from genparams.runtime.core.visible import visible
+from genparams.runtime.node.binding import check_prefix
+from genparams.runtime.node.declaring import ros_parameter
 from genparams.runtime.params import Params
-from genparams.runtime.spec import CompiledParam, compile_schema
-from genparams.runtime.suggest import did_you_mean
-from genparams.runtime.tree import build_tree
-from genparams.runtime.types import ValueTypeError
-from genparams.runtime.visible import visible
 
 if TYPE_CHECKING:
-    from genparams.runtime.remote_watch import RemoteWatch
+    from genparams.runtime.remote.watch import RemoteWatch
 
 P = TypeVar("P", bound=Params)
 _NOT_SET = ParameterType.PARAMETER_NOT_SET
@@ -291,7 +291,7 @@ class RemoteParams(Generic[P]):
         from there on is reported), ``latest`` is the newest known snapshot, and
         ``cancel()`` stops watching. The client node must be spun by an executor.
         """
-        from genparams.runtime.remote_watch import RemoteWatch
+        from genparams.runtime.remote.watch import RemoteWatch
 
         return RemoteWatch(self, callback)
 
