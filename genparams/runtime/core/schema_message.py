@@ -21,7 +21,9 @@ from genparams.runtime.core.spec import ParamSpec, RuleSpec, SchemaSpec, compile
 from genparams.runtime.core.tree import Group
 from genparams.runtime.core.types import TYPES
 from genparams.runtime.core.validators import Custom
-from genparams.runtime.node.schema_topic import FORMAT_VERSION
+
+FORMAT_VERSION = 1
+"""The version of the schema message's shape: written by the node, checked by readers."""
 
 SCHEMA_MESSAGE_LIMITS = Limits(max_chars=16 << 20, max_depth=32)
 """16 MiB is about 40,000 described parameters; format 1 nests 9 deep at most."""

@@ -6,7 +6,6 @@ from collections.abc import Collection, Iterable, Mapping
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
-from genparams.runtime.core.lifecycle_text import CONFIGURE_ONLY_TEXT
 from genparams.runtime.core.naming import (
     ENTRY_KEY,
     ENTRY_KEY_RULE,
@@ -22,6 +21,10 @@ from genparams.runtime.core.validators import Bounds, OneOf, RosRange, SubsetOf,
 
 if TYPE_CHECKING:
     from genparams.runtime.core.tree import Group
+
+
+CONFIGURE_ONLY_TEXT = "changes only while the lifecycle node is unconfigured or inactive"
+"""The words of ``configure_only``: one source for descriptors, docs and refusals."""
 
 
 @dataclass(frozen=True)

@@ -21,7 +21,8 @@ from rclpy.parameter import Parameter
 from genparams.runtime.core.changes import Change, Changes
 from genparams.runtime.core.entries import resolve_all
 from genparams.runtime.core.errors import ParameterDeclarationError
-from genparams.runtime.core.naming import is_ros_token, join_prefix, strip_prefix
+from genparams.runtime.core.naming import check_prefix, join_prefix, strip_prefix
+from genparams.runtime.core.params_view import ParamsView
 from genparams.runtime.core.rule_check import broken_rules
 from genparams.runtime.core.spec import CompiledParam, compile_schema
 from genparams.runtime.core.tree import (
@@ -41,19 +42,9 @@ from genparams.runtime.node.lifecycle import mutability_problem
 from genparams.runtime.node.mapped import EntryPlan, MappedEntries
 from genparams.runtime.node.overrides import OverrideReader
 from genparams.runtime.node.rewrites import add_rewrite, typed_empty_arrays
-from genparams.runtime.params import Params
 
-P = TypeVar("P", bound=Params)
+P = TypeVar("P", bound=ParamsView)
 _NOT_SET = Parameter.Type.NOT_SET  # reading an Enum member costs on every set
-
-
-def check_prefix(prefix: str) -> str:
-    if prefix and not all(is_ros_token(part) for part in prefix.split(".")):
-        raise ValueError(
-            f"invalid parameter prefix {prefix!r}: dot-separated names of letters, "
-            "digits and underscores, each starting with a letter"
-        )
-    return prefix
 
 
 class Binding(Generic[P]):

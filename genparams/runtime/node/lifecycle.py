@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from typing import TYPE_CHECKING, Any
 
-from genparams.runtime.core.lifecycle_text import CONFIGURE_ONLY_TEXT
+from genparams.runtime.core.spec import CONFIGURE_ONLY_TEXT
 from genparams.runtime.node.rclpy_internals import lifecycle_state
 
 if TYPE_CHECKING:

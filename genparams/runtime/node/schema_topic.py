@@ -25,6 +25,7 @@ from typing import TYPE_CHECKING, Any
 from genparams import __version__
 from genparams.runtime.core.json_codec import dumps
 from genparams.runtime.core.naming import ENTRY_KEY, join_prefix
+from genparams.runtime.core.schema_message import FORMAT_VERSION
 from genparams.runtime.core.spec import CompiledParam, CompiledSchema
 
 if TYPE_CHECKING:
@@ -35,7 +36,6 @@ SCHEMA_TOPIC = "~/genparams/schema"
 """Relative to the node: ``/ns/camera`` publishes on ``/ns/camera/genparams/schema``."""
 
 SCHEMA_TOPIC_SUFFIX = "/genparams/schema"
-FORMAT_VERSION = 1
 
 
 def json_value(value: Any) -> Any:

@@ -27,20 +27,19 @@ from genparams.runtime.core.entries import (
     template_keys,
 )
 from genparams.runtime.core.errors import RemoteParameterError, RemoteSetError
-from genparams.runtime.core.naming import is_entry_key, join_prefix, strip_prefix
+from genparams.runtime.core.naming import check_prefix, is_entry_key, join_prefix, strip_prefix
+from genparams.runtime.core.params_view import ParamsView
 from genparams.runtime.core.spec import CompiledParam, compile_schema
 from genparams.runtime.core.suggest import did_you_mean
 from genparams.runtime.core.tree import build_tree
 from genparams.runtime.core.types import ValueTypeError
 from genparams.runtime.core.visible import visible
-from genparams.runtime.node.binding import check_prefix
 from genparams.runtime.node.declaring import ros_parameter
-from genparams.runtime.params import Params
 
 if TYPE_CHECKING:
     from genparams.runtime.remote.watch import RemoteWatch
 
-P = TypeVar("P", bound=Params)
+P = TypeVar("P", bound=ParamsView)
 _NOT_SET = ParameterType.PARAMETER_NOT_SET
 T = TypeVar("T")
 

@@ -22,13 +22,13 @@ from rclpy.timer import Timer
 
 from genparams.runtime.core.changes import Change, Changes
 from genparams.runtime.core.entries import expand
+from genparams.runtime.core.params_view import ParamsView
 from genparams.runtime.core.spec import CompiledParam
 from genparams.runtime.core.tree import get_path, replace_values
 from genparams.runtime.core.types import ValueTypeError
-from genparams.runtime.params import Params
 from genparams.runtime.remote.client import RemoteParams, TypedFuture
 
-P = TypeVar("P", bound=Params)
+P = TypeVar("P", bound=ParamsView)
 
 
 class RemoteWatch(Generic[P]):
