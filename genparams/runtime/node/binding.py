@@ -39,7 +39,7 @@ from genparams.runtime.node.consistency import NodeSets, node_sets
 from genparams.runtime.node.declaring import declare_batch, descriptor_for, ros_parameter
 from genparams.runtime.node.deprecation import DeprecationWatch, Notices, report_overrides
 from genparams.runtime.node.lifecycle import mutability_problem
-from genparams.runtime.node.mapped import EntryPlan, MappedEntries
+from genparams.runtime.node.mapped import EntryOwner, EntryPlan, MappedEntries
 from genparams.runtime.node.overrides import OverrideReader
 from genparams.runtime.node.rewrites import add_rewrite, typed_empty_arrays
 
@@ -144,7 +144,8 @@ class Binding(Generic[P]):
             old_names = {old: owned[cur] for old, cur in aliases.current_of.items()}
             add_rewrite(node, typed_empty_arrays(collections.ChainMap(binding.owned, old_names)))
         # Mapped groups, old names and deprecations each watch the node on their own.
-        binding.mapped = MappedEntries.attach(binding, compiled, parameters, notices)
+        entry_owner = EntryOwner(node, prefix, binding.owned, sets.check)
+        binding.mapped = MappedEntries.attach(entry_owner, compiled, parameters, notices)
         if compiled.aliases:
             aliases.attach()
         DeprecationWatch.attach(node, notices, binding.owned, compiled)
@@ -159,7 +160,7 @@ class Binding(Generic[P]):
         """This class's part of a request, typed, or the reasons it is refused."""
         typed, reasons = check_each(self.owned, parameters)
         if self.mapped is not None and not reasons:
-            reasons.extend(self.mapped.check(parameters, typed, declaring))
+            reasons.extend(self.mapped.check(self.current, parameters, typed, declaring))
         if reasons:
             return reasons
         if not typed:
@@ -229,9 +230,8 @@ class Binding(Generic[P]):
             owned.update(dropped)
             return False
         owned.update((full(name), param) for name, param in plan.declare.items())
-        mapped.entries = plan.entries
-        spec = mapped.compiled.spec
         before = self.current
+        spec = type(before)._SPEC
         after = build_tree(
             type(before), spec.groups, plan.values, extra={"_binding": None}, maps=spec.maps
         )

@@ -9,8 +9,8 @@ frozen values ``snapshot()`` returns on the node itself.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Generator, Mapping
-from typing import TYPE_CHECKING, Any, Generic, TypeVar, cast
+from collections.abc import Callable, Mapping
+from typing import TYPE_CHECKING, Any, Generic, TypeVar
 
 from rcl_interfaces.msg import ParameterType
 from rclpy.node import Node
@@ -35,25 +35,13 @@ from genparams.runtime.core.tree import build_tree
 from genparams.runtime.core.types import ValueTypeError
 from genparams.runtime.core.visible import visible
 from genparams.runtime.node.declaring import ros_parameter
+from genparams.runtime.remote.typed_future import TypedFuture
 
 if TYPE_CHECKING:
     from genparams.runtime.remote.watch import RemoteWatch
 
 P = TypeVar("P", bound=ParamsView)
 _NOT_SET = ParameterType.PARAMETER_NOT_SET
-T = TypeVar("T")
-
-
-class TypedFuture(Future, Generic[T]):
-    """An rclpy Future that says what it resolves to."""
-
-    def result(self) -> T | None:
-        """The result once done (None before); raises the failure if there was one."""
-        return cast("T | None", super().result())
-
-    def __await__(self) -> Generator[None, None, T]:
-        result = yield from super().__await__()
-        return cast(T, result)
 
 
 def _fully_qualified(node: Node, target: str) -> str:
