@@ -186,7 +186,6 @@ KILLER_TESTS = {
     "genparams.runtime.core.validators": KERNEL_TESTS,
     "genparams.runtime.core.validator_kinds": KERNEL_TESTS,
     "genparams.runtime.core.types": KERNEL_TESTS,
-    "genparams.runtime.core.values": KERNEL_TESTS,
     "genparams.runtime.core.naming": KERNEL_TESTS,
     "genparams.runtime.core.suggest": KERNEL_TESTS,
     "genparams.runtime.core.expression_words": KERNEL_TESTS,

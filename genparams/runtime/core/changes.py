@@ -1,4 +1,14 @@
-"""What ``on_change`` subscribers receive: the committed change, with values before and after."""
+"""What counts as a change, and what ``on_change`` subscribers receive of one.
+
+A value is changed unless it is the same: a NaN is the same as a NaN.
+
+IEEE says NaN != NaN, so a parameter holding NaN would count as changed by
+every set of NaN, waking ``on_change`` with (nan, nan) and making a snapshot
+unequal to itself. A parameter either holds NaN or not: re-applying the same
+value, NaN included, is no change.
+
+Subscribers receive the committed change, with values before and after.
+"""
 
 from __future__ import annotations
 
@@ -36,3 +46,22 @@ class Changes(Generic[P]):
 
     def __len__(self) -> int:
         return len(self.changed)
+
+
+def same_value(a: Any, b: Any) -> bool:
+    """``a == b``, with NaN equal to NaN, in scalars and in arrays (tuples)."""
+    if a == b:
+        return True
+    if type(a) is float:
+        return type(b) is float and a != a and b != b
+    if type(a) is tuple and type(b) is tuple and len(a) == len(b):
+        return all(same_value(x, y) for x, y in zip(a, b, strict=True))
+    return False
+
+
+def same_typed_value(a: Any, b: Any) -> bool:
+    """``same_value`` of two values of the same type: for a parameter of type ``any``,
+    1 and 1.0 (an int then a double), or (1,) and (1.0,), are a change."""
+    if type(a) is not type(b) or not same_value(a, b):
+        return False
+    return type(a) is not tuple or not a or type(a[0]) is type(b[0])

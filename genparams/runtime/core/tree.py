@@ -11,8 +11,8 @@ import sys
 from collections.abc import Callable, Collection, Iterable, Iterator, Mapping
 from typing import Any, ClassVar, TypeGuard, TypeVar, cast, final
 
+from genparams.runtime.core.changes import same_value
 from genparams.runtime.core.naming import ENTRY_KEY, MAP_SLOT, attribute_name
-from genparams.runtime.core.values import same_value
 
 _READ_ONLY = (
     "{cls}.{name} is read-only: change parameters through the node "

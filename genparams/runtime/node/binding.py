@@ -18,7 +18,7 @@ from typing import Any, Generic, TypeVar
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
-from genparams.runtime.core.changes import Change, Changes
+from genparams.runtime.core.changes import Change, Changes, same_typed_value, same_value
 from genparams.runtime.core.entries import resolve_all
 from genparams.runtime.core.errors import ParameterDeclarationError
 from genparams.runtime.core.naming import check_prefix, join_prefix, strip_prefix
@@ -33,7 +33,6 @@ from genparams.runtime.core.tree import (
     replace_values,
     reuse_values,
 )
-from genparams.runtime.core.values import same_typed_value, same_value
 from genparams.runtime.node.aliases import Aliases, old_names_by_current
 from genparams.runtime.node.consistency import NodeSets, node_sets
 from genparams.runtime.node.declaring import declare_batch, descriptor_for, ros_parameter
