@@ -21,10 +21,10 @@ from typing import Any
 
 import genparams
 from bench.schemas import bench_schema, write_schema
-from genparams.runtime.json_codec import loads
-from genparams.runtime.schema_message import SCHEMA_MESSAGE_LIMITS, read_schema_message
-from genparams.runtime.schema_topic import class_text, node_message_text
-from genparams.runtime.spec import compile_schema
+from genparams.runtime.core.json_codec import loads
+from genparams.runtime.core.schema_message import SCHEMA_MESSAGE_LIMITS, read_schema_message
+from genparams.runtime.core.spec import compile_schema
+from genparams.runtime.node.schema_topic import class_text, node_message_text
 
 SIZES = (100, 1000, 5000)
 RUNS = 7

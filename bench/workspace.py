@@ -26,8 +26,8 @@ class Prepared:
 
 def prepare(size: int, directory: Path) -> Prepared:
     """Write the schema, generate its module, and write the hand-written equivalent."""
-    from genparams.runtime.declaring import descriptor_for
-    from genparams.runtime.spec import compile_schema
+    from genparams.runtime.core.spec import compile_schema
+    from genparams.runtime.node.declaring import descriptor_for
 
     schema = bench_schema(size)
     schema_path = write_schema(schema, directory)

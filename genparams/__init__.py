@@ -14,7 +14,7 @@ __version__ = "0.1.0"
 if TYPE_CHECKING:
     from genparams.api import generate, load_schema
     from genparams.errors import CommandError, GenparamsError, Problem, render_problem
-    from genparams.runtime.errors import (
+    from genparams.runtime.core.errors import (
         ParameterDeclarationError,
         RemoteParameterError,
         RemoteSetError,
@@ -52,7 +52,7 @@ def __getattr__(name: str) -> Any:
 
         return getattr(errors, name)
     if name in _RUNTIME_ERRORS:
-        from genparams.runtime import errors as runtime_errors
+        from genparams.runtime.core import errors as runtime_errors
 
         return getattr(runtime_errors, name)
     if name in _SCHEMA_ERRORS:

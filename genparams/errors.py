@@ -14,8 +14,8 @@ from __future__ import annotations
 
 from typing import Protocol
 
-from genparams.runtime.errors import GenparamsError
-from genparams.runtime.visible import visible
+from genparams.runtime.core.errors import GenparamsError
+from genparams.runtime.core.visible import visible
 
 __all__ = ["CommandError", "GenparamsError", "Problem", "render_problem"]
 

@@ -24,7 +24,7 @@ from genparams.outputs.docs_model import docs_page
 from genparams.outputs.json_schema import params_file_schema
 from genparams.outputs.params_file import default_params_file
 from genparams.outputs.render import render_docs, render_params_file
-from genparams.runtime.json_codec import dumps
+from genparams.runtime.core.json_codec import dumps
 
 TESTS = Path(__file__).resolve().parent
 ROOT = TESTS.parent

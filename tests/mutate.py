@@ -14,7 +14,7 @@ mutmut (configured in pyproject.toml, [tool.mutmut]) copies the package into
 mutants/, records which tests call each function, and runs each mutant against
 only those tests. Its results stay in mutants/*.meta between runs, so a long run
 can be stopped and resumed. MODULE is a dotted name such as
-``genparams.runtime.binding``; without one, every module in CORE then the rest.
+``genparams.runtime.node.binding``; without one, every module in CORE then the rest.
 
 Survivors that no test can kill (equivalent mutants) or that are accepted are
 listed with the reason in tests/mutation_accepted.txt; ``report`` fails only on
@@ -53,12 +53,12 @@ MUTMUT = [sys.executable, "-m", "mutmut"]
 
 # The modules whose every change of behaviour a test must catch, first.
 CORE = (
-    "genparams.runtime.validators",
-    "genparams.runtime.validator_kinds",
-    "genparams.runtime.binding",
-    "genparams.runtime.spec",
-    "genparams.runtime.entries",
-    "genparams.runtime.tree",
+    "genparams.runtime.core.validators",
+    "genparams.runtime.core.validator_kinds",
+    "genparams.runtime.node.binding",
+    "genparams.runtime.core.spec",
+    "genparams.runtime.core.entries",
+    "genparams.runtime.core.tree",
     "genparams.paramsfile.check_params",
     "genparams.paramsfile.params_reader",
     "genparams.paramsfile.ros_yaml",
@@ -84,7 +84,7 @@ def all_modules() -> list[str]:
     names = [
         str(path.relative_to(ROOT).with_suffix("")).replace("/", ".")
         for package in PACKAGES
-        for path in sorted((ROOT / package).glob("*.py"))
+        for path in sorted((ROOT / package).rglob("*.py"))
         if path.name != "__init__.py"
     ]
     return [*CORE, *(name for name in names if name not in CORE)]
@@ -131,24 +131,27 @@ def accepted() -> dict[str, str]:
 # The tests written for a module, run first for its mutants: they are the likeliest to
 # kill them, and a survivor is judged mostly by them (see MAX_TESTS_PER_MUTANT).
 OWN_TESTS = {
-    "genparams.runtime.validators": ("tests/runtime/test_validators.py", "tests/runtime/test_edge"),
-    "genparams.runtime.validator_kinds": ("tests/runtime/test_validators.py", "tests/schema/"),
-    "genparams.runtime.binding": (
+    "genparams.runtime.core.validators": (
+        "tests/runtime/test_validators.py",
+        "tests/runtime/test_edge",
+    ),
+    "genparams.runtime.core.validator_kinds": ("tests/runtime/test_validators.py", "tests/schema/"),
+    "genparams.runtime.node.binding": (
         "tests/runtime/test_commit_semantics.py",
         "tests/runtime/test_runtime_services.py",
     ),
-    "genparams.runtime.tree": (
+    "genparams.runtime.core.tree": (
         "tests/runtime/test_tree_updates.py",
         "tests/runtime/test_commit_records.py",
     ),
-    "genparams.runtime.mapped": ("tests/runtime/test_mapped.py",),
-    "genparams.runtime.expressions": (
+    "genparams.runtime.node.mapped": ("tests/runtime/test_mapped.py",),
+    "genparams.runtime.core.expressions": (
         "tests/schema/test_expressions.py",
         "tests/runtime/test_rules",
     ),
-    "genparams.runtime.remote": ("tests/runtime/test_remote",),
-    "genparams.runtime.remote_watch": ("tests/runtime/test_remote",),
-    "genparams.runtime.schema_topic": ("tests/runtime/test_schema_message.py",),
+    "genparams.runtime.remote.client": ("tests/runtime/test_remote",),
+    "genparams.runtime.remote.watch": ("tests/runtime/test_remote",),
+    "genparams.runtime.node.schema_topic": ("tests/runtime/test_schema_message.py",),
     "genparams.paramsfile": ("tests/paramsfile/",),
 }
 # The tests written to kill each module's mutants, as globs: `recheck` runs every survivor
@@ -180,21 +183,20 @@ KILLER_TESTS = {
         "tests/runtime/test_declared_descriptors_and_notices.py",
     ),
     # its kernel: validators, types, naming, expressions and rules
-    "genparams.runtime.validators": KERNEL_TESTS,
-    "genparams.runtime.validator_kinds": KERNEL_TESTS,
-    "genparams.runtime.types": KERNEL_TESTS,
-    "genparams.runtime.values": KERNEL_TESTS,
-    "genparams.runtime.naming": KERNEL_TESTS,
-    "genparams.runtime.suggest": KERNEL_TESTS,
-    "genparams.runtime.expression_words": KERNEL_TESTS,
-    "genparams.runtime.expressions": KERNEL_TESTS,
-    "genparams.runtime.rules": KERNEL_TESTS,
-    "genparams.runtime.rule_check": KERNEL_TESTS,
-    "genparams.runtime.errors": KERNEL_TESTS,
-    "genparams.runtime.changes": KERNEL_TESTS,
-    "genparams.runtime.remote": ("tests/runtime/test_remote*.py",),
-    "genparams.runtime.remote_watch": ("tests/runtime/test_remote*.py",),
-    "genparams.runtime.schema_topic": ("tests/runtime/test_schema_message.py",),
+    "genparams.runtime.core.validators": KERNEL_TESTS,
+    "genparams.runtime.core.validator_kinds": KERNEL_TESTS,
+    "genparams.runtime.core.types": KERNEL_TESTS,
+    "genparams.runtime.core.naming": KERNEL_TESTS,
+    "genparams.runtime.core.suggest": KERNEL_TESTS,
+    "genparams.runtime.core.expression_words": KERNEL_TESTS,
+    "genparams.runtime.core.expressions": KERNEL_TESTS,
+    "genparams.runtime.core.rules": KERNEL_TESTS,
+    "genparams.runtime.core.rule_check": KERNEL_TESTS,
+    "genparams.runtime.core.errors": KERNEL_TESTS,
+    "genparams.runtime.core.changes": KERNEL_TESTS,
+    "genparams.runtime.remote.client": ("tests/runtime/test_remote*.py",),
+    "genparams.runtime.remote.watch": ("tests/runtime/test_remote*.py",),
+    "genparams.runtime.node.schema_topic": ("tests/runtime/test_schema_message.py",),
     "genparams.paramsfile": (
         "tests/paramsfile/test_[!c]*.py",
         "tests/paramsfile/test_check_params*.py",
@@ -320,7 +322,7 @@ def generate() -> None:
     if not MUTANTS.exists() or not any(results(m) for m in CORE):
         for copy in COPIES:
             shutil.rmtree(MUTANTS / copy, ignore_errors=True)
-        subprocess.run([*MUTMUT, "run", "genparams.runtime.changes*"], cwd=ROOT, check=False)
+        subprocess.run([*MUTMUT, "run", "genparams.runtime.core.changes*"], cwd=ROOT, check=False)
 
 
 def run(modules: list[str], *, which: tuple[str, ...]) -> None:

@@ -13,10 +13,10 @@ from typing import Any
 from rclpy.node import Node
 
 from genparams.runtime import Params
-from genparams.runtime.naming import join_prefix
-from genparams.runtime.spec import compile_schema
-from genparams.runtime.tree import get_path
-from genparams.runtime.types import TYPES, ParamType
+from genparams.runtime.core.naming import join_prefix
+from genparams.runtime.core.spec import compile_schema
+from genparams.runtime.core.tree import get_path
+from genparams.runtime.core.types import TYPES, ParamType
 from tests.support import RosHarness, ServiceClient
 
 

@@ -10,7 +10,7 @@ from genparams.audit.findings import DRIFT_FILE, Finding
 from genparams.errors import GenparamsError
 from genparams.paramsfile.params_reader import ParamsDocument, read_params_file
 from genparams.paramsfile.ros_yaml import node_matches
-from genparams.runtime.values import same_value as runtime_same_value
+from genparams.runtime.core.changes import same_value as runtime_same_value
 from genparams.schema.errors import SchemaError
 from genparams.schema.input_file import read_input_file
 

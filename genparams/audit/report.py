@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from genparams.audit.walk import AuditResult
-from genparams.runtime.json_codec import dumps
+from genparams.runtime.core.json_codec import dumps
 
 
 def text_report(result: AuditResult) -> str:

@@ -16,13 +16,13 @@ from collections.abc import Collection, Iterable, Iterator, Mapping
 from typing import Any
 
 from genparams.audit.findings import DRIFT_DEFAULT, NOT_CHECKED, VIOLATION, Finding
-from genparams.runtime.entries import keys_under
-from genparams.runtime.naming import OVERRIDE_KEYS, strip_prefix
-from genparams.runtime.rules import RuleError, compile_rule
-from genparams.runtime.schema_message import param_from_json, why_not_run
-from genparams.runtime.spec import CompiledParam, compile_param
-from genparams.runtime.validators import Custom
-from genparams.runtime.values import same_value
+from genparams.runtime.core.changes import same_value
+from genparams.runtime.core.entries import keys_under
+from genparams.runtime.core.naming import OVERRIDE_KEYS, strip_prefix
+from genparams.runtime.core.rules import RuleError, compile_rule
+from genparams.runtime.core.schema_message import param_from_json, why_not_run
+from genparams.runtime.core.spec import CompiledParam, compile_param
+from genparams.runtime.core.validators import Custom
 
 
 def not_runnable(check: Any, packages: Collection[str]) -> str | None:

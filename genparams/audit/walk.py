@@ -15,7 +15,7 @@ from genparams.audit.deployment import file_drift
 from genparams.audit.findings import BAD_SCHEMA, NO_SCHEMA, UNREACHABLE, Finding
 from genparams.audit.schema_checks import check_node
 from genparams.paramsfile.params_reader import ParamsDocument
-from genparams.runtime.schema_topic import SCHEMA_TOPIC_SUFFIX
+from genparams.runtime.node.schema_topic import SCHEMA_TOPIC_SUFFIX
 from genparams.tune.graph import Graph
 
 

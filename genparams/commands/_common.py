@@ -8,7 +8,7 @@ from pathlib import Path
 from genparams.api import load_schema
 from genparams.errors import CommandError
 from genparams.integration.writing import write_all
-from genparams.runtime.visible import visible
+from genparams.runtime.core.visible import visible
 from genparams.schema.errors import SchemaError
 from genparams.schema.model import Schema
 

@@ -8,7 +8,7 @@ from pathlib import Path
 from genparams.commands._common import schema_from
 from genparams.errors import CommandError
 from genparams.paramsfile.check_params import Bound
-from genparams.runtime.naming import is_ros_token, join_prefix
+from genparams.runtime.core.naming import is_ros_token, join_prefix
 
 
 def bound_spec(text: str) -> tuple[Path, str]:

@@ -12,7 +12,7 @@ from genparams.paramsfile.check_params import Bound
 from genparams.paramsfile.deployment import Deployed, check_deployment
 from genparams.paramsfile.manifest import Manifest, NodeEntry, parse_map, read_manifest
 from genparams.paramsfile.params_reader import read_params_file
-from genparams.runtime.visible import visible
+from genparams.runtime.core.visible import visible
 from genparams.schema.errors import SchemaError
 from genparams.schema.input_file import read_input_file
 from genparams.schema.model import Schema

@@ -8,7 +8,7 @@ from pathlib import Path
 from genparams.commands._common import emit
 from genparams.commands._schemas import add_schema_arguments, bound_spec, load_bounds
 from genparams.outputs.json_schema import params_file_schema
-from genparams.runtime.json_codec import dumps
+from genparams.runtime.core.json_codec import dumps
 from genparams.schema.combine import combined_schema
 
 

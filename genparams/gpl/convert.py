@@ -15,8 +15,8 @@ from typing import Any
 
 from genparams.errors import GenparamsError
 from genparams.gpl.validation import Translated, descriptor_range, element_bounds, translate
-from genparams.runtime.types import TYPES, ValueTypeError
-from genparams.runtime.validator_kinds import KINDS, ValidatorArgumentError, build_validator
+from genparams.runtime.core.types import TYPES, ValueTypeError
+from genparams.runtime.core.validator_kinds import KINDS, ValidatorArgumentError, build_validator
 from genparams.schema.errors import SchemaProblem
 from genparams.schema.loader import LoadedDocument, Path, dotted
 

@@ -16,8 +16,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
-from genparams.runtime.naming import NODE_PARAMETERS, is_ros_token
-from genparams.runtime.types import TYPES_BY_ROS_TYPE
+from genparams.runtime.core.naming import NODE_PARAMETERS, is_ros_token
+from genparams.runtime.core.types import TYPES_BY_ROS_TYPE
 
 NOT_SET = 0  # rcl_interfaces ParameterType.PARAMETER_NOT_SET
 BYTE_ARRAY = 5  # rcl_interfaces ParameterType.PARAMETER_BYTE_ARRAY

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from genparams import __version__
 from genparams.outputs.params_file import ParamsFile, default_params_file
 from genparams.outputs.yaml_text import value_text
-from genparams.runtime.naming import ENTRY_KEY, OVERRIDE_KEYS
+from genparams.runtime.core.naming import ENTRY_KEY, OVERRIDE_KEYS
 from genparams.schema.model import Group, OpenNamespace, Parameter, Schema
 
 FORMATS = ("markdown", "rst")

@@ -7,7 +7,7 @@ from typing import Any
 from genparams.outputs.yaml_text import key_text, node_key_text, scalar_text
 from genparams.paramsfile.explain import Explanation, Row
 from genparams.paramsfile.ros_yaml import PARAMS_KEY, ros_type_name
-from genparams.runtime.visible import visible
+from genparams.runtime.core.visible import visible
 
 
 def shown(value: Any) -> str:

@@ -26,9 +26,9 @@ from genparams.outputs.schema_paths import (
 )
 from genparams.outputs.yaml_text import value_text
 from genparams.paramsfile.ros_yaml import PARAMS_KEY
-from genparams.runtime.naming import ENTRY_KEY, NODE_TOKEN
-from genparams.runtime.spec import EntryKeys
-from genparams.runtime.validators import (
+from genparams.runtime.core.naming import ENTRY_KEY, NODE_TOKEN
+from genparams.runtime.core.spec import EntryKeys
+from genparams.runtime.core.validators import (
     Bounds,
     Compare,
     Length,

@@ -26,7 +26,7 @@ from genparams.outputs.yaml_text import (
     value_text,
 )
 from genparams.paramsfile.ros_yaml import PARAMS_KEY, absolute, node_pattern_problem, ros_scalar
-from genparams.runtime.naming import OVERRIDE_KEYS
+from genparams.runtime.core.naming import OVERRIDE_KEYS
 from genparams.schema.model import Group, Parameter, Schema
 
 ALL_NODES = "/**"

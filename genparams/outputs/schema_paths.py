@@ -9,7 +9,7 @@ from __future__ import annotations
 import re
 from collections.abc import Collection, Iterator
 
-from genparams.runtime.naming import ENTRY_KEY, ENTRY_KEY_TEXT
+from genparams.runtime.core.naming import ENTRY_KEY, ENTRY_KEY_TEXT
 from genparams.schema.model import Group, OpenNamespace, Parameter
 
 ENTRY_KEY_PATTERN = f"^{ENTRY_KEY_TEXT.pattern}$"  # the key of a mapped entry, as naming words it

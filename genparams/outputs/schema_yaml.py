@@ -6,7 +6,7 @@ from typing import Any
 
 import yaml
 
-from genparams.runtime.validator_kinds import KINDS
+from genparams.runtime.core.validator_kinds import KINDS
 
 _RANGE_KEYS = {"min", "max", "step"}  # a range reads on one line: {min: 0.0, max: .inf}
 

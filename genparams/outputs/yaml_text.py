@@ -14,7 +14,7 @@ import re
 from typing import Any
 
 from genparams.paramsfile.ros_yaml import ros_scalar
-from genparams.runtime.types import ParamType
+from genparams.runtime.core.types import ParamType
 
 # Plain (unquoted) strings: a conservative alphabet that no YAML reader treats specially.
 _PLAIN_STRING = re.compile(r"[A-Za-z_/][A-Za-z0-9_./+-]*")

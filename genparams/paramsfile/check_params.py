@@ -19,8 +19,8 @@ from genparams.paramsfile.node_sections import rcl_order, sections_for
 from genparams.paramsfile.params_reader import ParamEntry, ParamsDocument, Section
 from genparams.paramsfile.ros_yaml import ros_type_name
 from genparams.paramsfile.section_checker import SectionChecker
-from genparams.runtime.naming import join_prefix
-from genparams.runtime.suggest import did_you_mean_name
+from genparams.runtime.core.naming import join_prefix
+from genparams.runtime.core.suggest import did_you_mean_name
 from genparams.schema.errors import Location, SchemaProblem
 from genparams.schema.model import Schema
 

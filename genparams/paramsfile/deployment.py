@@ -19,7 +19,7 @@ from genparams.paramsfile.manifest import NodeEntry
 from genparams.paramsfile.node_sections import near_miss
 from genparams.paramsfile.params_reader import ParamsDocument
 from genparams.paramsfile.ros_yaml import node_matches
-from genparams.runtime.naming import WILDCARD_ANY, WILDCARD_ONE
+from genparams.runtime.core.naming import WILDCARD_ANY, WILDCARD_ONE
 from genparams.schema.errors import SchemaProblem
 
 ALL_NODES = "/**"

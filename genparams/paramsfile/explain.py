@@ -29,9 +29,9 @@ from genparams.paramsfile.node_sections import Skipped, sections_for
 from genparams.paramsfile.params_reader import ParamEntry, ParamsDocument, Section
 from genparams.paramsfile.ros_yaml import NoValue, absolute, ros_scalar
 from genparams.paramsfile.section_checker import SectionChecker
-from genparams.runtime.naming import is_ros_token, join_prefix
-from genparams.runtime.spec import CompiledParam
-from genparams.runtime.types import ValueTypeError
+from genparams.runtime.core.naming import is_ros_token, join_prefix
+from genparams.runtime.core.spec import CompiledParam
+from genparams.runtime.core.types import ValueTypeError
 from genparams.schema.errors import Location, SchemaError
 from genparams.schema.nesting import check_nesting
 

@@ -24,7 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from genparams.paramsfile.ros_yaml import absolute, node_pattern_problem
-from genparams.runtime.naming import is_ros_token
+from genparams.runtime.core.naming import is_ros_token
 from genparams.schema.errors import SchemaError, SchemaProblem
 from genparams.schema.input_file import read_input_file
 from genparams.schema.loader import LoadedDocument, load_yaml

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 from genparams.paramsfile.params_reader import Section
 from genparams.paramsfile.ros_yaml import absolute, node_matches
-from genparams.runtime.naming import WILDCARD_ANY, WILDCARD_ONE
+from genparams.runtime.core.naming import WILDCARD_ANY, WILDCARD_ONE
 
 
 @dataclass(frozen=True)

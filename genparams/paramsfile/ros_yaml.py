@@ -17,10 +17,10 @@ from dataclasses import dataclass
 from fractions import Fraction
 
 # Node names and their wildcards are name rules: runtime.naming holds them.
-from genparams.runtime.naming import WILDCARD_ANY, WILDCARD_ONE
-from genparams.runtime.naming import absolute as absolute
-from genparams.runtime.naming import node_name_problem as node_name_problem
-from genparams.runtime.naming import node_pattern_problem as node_pattern_problem
+from genparams.runtime.core.naming import WILDCARD_ANY, WILDCARD_ONE
+from genparams.runtime.core.naming import absolute as absolute
+from genparams.runtime.core.naming import node_name_problem as node_name_problem
+from genparams.runtime.core.naming import node_pattern_problem as node_pattern_problem
 
 PARAMS_KEY = "ros__parameters"
 

@@ -15,11 +15,11 @@ from collections.abc import Sequence
 from typing import Any
 
 from genparams.paramsfile.params_reader import ParamEntry, Section
-from genparams.runtime.entries import expand, override_keys
-from genparams.runtime.naming import ENTRY_KEY, ENTRY_KEY_RULE, OVERRIDE_KEYS, is_entry_key
-from genparams.runtime.spec import CompiledParam
-from genparams.runtime.types import ValueTypeError
-from genparams.runtime.validators import Custom
+from genparams.runtime.core.entries import expand, override_keys
+from genparams.runtime.core.naming import ENTRY_KEY, ENTRY_KEY_RULE, OVERRIDE_KEYS, is_entry_key
+from genparams.runtime.core.spec import CompiledParam
+from genparams.runtime.core.types import ValueTypeError
+from genparams.runtime.core.validators import Custom
 from genparams.schema.errors import Location, SchemaProblem
 from genparams.schema.model import Schema
 from genparams.schema.specs import compiled_schema

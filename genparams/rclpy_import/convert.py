@@ -22,8 +22,8 @@ from typing import Any
 from genparams.rclpy_import.features import awaiting_feature
 from genparams.rclpy_import.scan import Found, Unit, descriptor_of
 from genparams.rclpy_import.values import DescriptorValue, RangeValue, TypeMarker
-from genparams.runtime.naming import NODE_PARAMETERS, SCHEMA_NAME, is_ros_name
-from genparams.runtime.types import INT64_MAX, INT64_MIN
+from genparams.runtime.core.naming import NODE_PARAMETERS, SCHEMA_NAME, is_ros_name
+from genparams.runtime.core.types import INT64_MAX, INT64_MIN
 from genparams.schema.errors import Location, SchemaProblem
 
 EXACT = "exact"

@@ -28,7 +28,7 @@ from genparams.rclpy_import.convert import LEFT_OUT
 from genparams.rclpy_import.node_file import ImportedNode
 from genparams.rclpy_import.scan import DECLARE_ONE, Found
 from genparams.rclpy_import.values import Evaluator, Scope, UntranslatableError
-from genparams.runtime.naming import attribute_parts, class_name, module_name
+from genparams.runtime.core.naming import attribute_parts, class_name, module_name
 
 _READ_ATTRIBUTES = ("value",)
 

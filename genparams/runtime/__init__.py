@@ -1,16 +1,16 @@
 """What generated modules import. Imports rclpy only when a class is declared on a node."""
 
-from genparams.runtime.changes import Change, Changes
-from genparams.runtime.errors import (
+from genparams.runtime.core.changes import Change, Changes
+from genparams.runtime.core.errors import (
     DetachedSnapshotError,
     ParameterDeclarationError,
     RemoteParameterError,
     RemoteSetError,
 )
+from genparams.runtime.core.spec import ParamSpec, RuleSpec, SchemaSpec
+from genparams.runtime.core.tree import Group, GroupMap
+from genparams.runtime.core.types import RosValue
 from genparams.runtime.params import Params
-from genparams.runtime.spec import ParamSpec, RuleSpec, SchemaSpec
-from genparams.runtime.tree import Group, GroupMap
-from genparams.runtime.types import RosValue
 
 # What a generated module may rely on: the names below and the fields of the specs.
 # Raise it on any change a module generated before could not run with; every

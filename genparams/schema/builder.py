@@ -12,9 +12,9 @@ from collections.abc import Collection, Iterable, Iterator
 from dataclasses import replace
 from typing import Any
 
-from genparams.runtime import naming
-from genparams.runtime.types import TYPES, ValueTypeError
-from genparams.runtime.validators import Custom
+from genparams.runtime.core import naming
+from genparams.runtime.core.types import TYPES, ValueTypeError
+from genparams.runtime.core.validators import Custom
 from genparams.schema.errors import SchemaError, SchemaProblem
 from genparams.schema.leaf_checks import LeafChecks
 from genparams.schema.loader import LoadedDocument, Path, dotted

@@ -10,10 +10,10 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from genparams.runtime.suggest import did_you_mean
-from genparams.runtime.types import INT64_MAX, INT64_MIN, TYPES, ParamType, ValueTypeError
-from genparams.runtime.validator_kinds import KINDS, ValidatorArgumentError, build_validator
-from genparams.runtime.validators import Bounds, Compare, RosRange, Validator
+from genparams.runtime.core.suggest import did_you_mean
+from genparams.runtime.core.types import INT64_MAX, INT64_MIN, TYPES, ParamType, ValueTypeError
+from genparams.runtime.core.validator_kinds import KINDS, ValidatorArgumentError, build_validator
+from genparams.runtime.core.validators import Bounds, Compare, RosRange, Validator
 from genparams.schema.loader import Path
 from genparams.schema.model import RangeSpec, ValidatorSpec
 from genparams.schema.references import Report

@@ -17,7 +17,7 @@ from typing import Any
 
 import yaml
 
-from genparams.runtime.types import ros_text_problem
+from genparams.runtime.core.types import ros_text_problem
 from genparams.schema.errors import Location, SchemaError, SchemaProblem
 from genparams.schema.nesting import MAX_DEPTH as MAX_DEPTH
 from genparams.schema.nesting import check_nesting

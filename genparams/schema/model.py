@@ -11,9 +11,9 @@ from collections.abc import Iterator
 from dataclasses import dataclass, replace
 from typing import Any
 
-from genparams.runtime.naming import ENTRY_KEY, OVERRIDE_KEYS
-from genparams.runtime.spec import CompiledParam, EntryKeys, ParamSpec, compile_param
-from genparams.runtime.types import ParamType
+from genparams.runtime.core.naming import ENTRY_KEY, OVERRIDE_KEYS
+from genparams.runtime.core.spec import CompiledParam, EntryKeys, ParamSpec, compile_param
+from genparams.runtime.core.types import ParamType
 from genparams.schema.errors import Location
 
 

@@ -8,9 +8,9 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from typing import Protocol
 
-from genparams.runtime import naming
-from genparams.runtime.suggest import did_you_mean
-from genparams.runtime.types import ValueTypeError
+from genparams.runtime.core import naming
+from genparams.runtime.core.suggest import did_you_mean
+from genparams.runtime.core.types import ValueTypeError
 from genparams.schema.loader import Path
 from genparams.schema.model import Group, Parameter
 

@@ -1,7 +1,7 @@
 """Build the model of a schema's ``rules:`` and check them: names, expressions, defaults.
 
 A check may read only parameters the schema declares, must be an expression of
-genparams.runtime.rules, and the defaults must satisfy it (when every parameter it reads
+genparams.runtime.core.rules, and the defaults must satisfy it (when every parameter it reads
 has a default). Problems point at the rule's ``check`` value.
 """
 
@@ -10,8 +10,8 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable
 from typing import Any
 
-from genparams.runtime.naming import ENTRY_KEY
-from genparams.runtime.rules import RuleError, compile_rule
+from genparams.runtime.core.naming import ENTRY_KEY
+from genparams.runtime.core.rules import RuleError, compile_rule
 from genparams.schema.errors import SchemaProblem
 from genparams.schema.loader import LoadedDocument, Path, dotted
 from genparams.schema.model import Parameter, Rule

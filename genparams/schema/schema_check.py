@@ -9,7 +9,7 @@ from typing import Any
 
 import jsonschema
 
-from genparams.runtime.suggest import did_you_mean
+from genparams.runtime.core.suggest import did_you_mean
 from genparams.schema.errors import SchemaProblem
 from genparams.schema.loader import LoadedDocument, Path, dotted
 from genparams.schema.resources import resource_dir
@@ -94,7 +94,7 @@ def _problems(
 
 
 def _validator_message(instance: Any) -> str:
-    from genparams.runtime.validator_kinds import KINDS
+    from genparams.runtime.core.validator_kinds import KINDS
 
     if isinstance(instance, str) and instance in KINDS:
         return f"validator {instance!r} needs an argument: {{{instance}: ...}}"

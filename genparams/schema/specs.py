@@ -8,7 +8,7 @@ worded, exactly as it is on a robot.
 
 from __future__ import annotations
 
-from genparams.runtime.spec import (
+from genparams.runtime.core.spec import (
     CompiledParam,
     CompiledSchema,
     ParamSpec,

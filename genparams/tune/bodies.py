@@ -2,7 +2,7 @@
 
 Anything a client sends that is not what the API takes becomes :class:`RequestError`
 (a 400 naming the problem), never an exception from deeper down. A body is read
-by the one JSON codec (:func:`genparams.runtime.json_codec.loads`: size, nesting,
+by the one JSON codec (:func:`genparams.runtime.core.json_codec.loads`: size, nesting,
 numbers no double holds, lone surrogates), each value is typed by the runtime's
 rules (:func:`genparams.tune.checking.json_parameter`: the wrong JSON type and
 integers outside int64 are refused), and node names by ROS's rules.
@@ -15,9 +15,9 @@ from typing import Any
 
 from rclpy.parameter import Parameter
 
-from genparams.runtime.errors import GenparamsError
-from genparams.runtime.json_codec import API_LIMITS, JsonError, loads
-from genparams.runtime.naming import absolute, node_name_problem
+from genparams.runtime.core.errors import GenparamsError
+from genparams.runtime.core.json_codec import API_LIMITS, JsonError, loads
+from genparams.runtime.core.naming import absolute, node_name_problem
 from genparams.tune.checking import json_parameter
 
 

@@ -3,19 +3,19 @@
 A node refuses a set in two steps, and this module runs the same code for each:
 
 1. rclpy checks each value against the parameter's descriptor (read-only, type,
-   range and step): :func:`genparams.runtime.rclpy_internals.descriptor_check`
+   range and step): :func:`genparams.runtime.node.rclpy_internals.descriptor_check`
    runs rclpy's own check.
 2. genparams' on-set callback checks each class's part: every value's type and
-   validators (:func:`genparams.runtime.binding.check_each`), then the rules over
+   validators (:func:`genparams.runtime.node.binding.check_each`), then the rules over
    the proposal merged into the node's values
-   (:func:`genparams.runtime.rule_check.violations`). The classes come from the
+   (:func:`genparams.runtime.core.rule_check.violations`). The classes come from the
    node's schema message, compiled by the runtime's own compiler.
 
 Custom validators are functions of the node's package. The message names them,
 so a node on the network could name any function of the tuning machine: they run
 here only from packages the user trusts (``genparams tune --trust-package``)
 that import, by the rule the audit follows
-(:func:`genparams.runtime.schema_message.why_not_run`); any other is checked by
+(:func:`genparams.runtime.core.schema_message.why_not_run`); any other is checked by
 the node when the value is applied, and the answer says so.
 
 What only the node knows is left to it: its other on-set callbacks, the
@@ -35,14 +35,14 @@ from rclpy.node import Node
 from rclpy.parameter import Parameter
 
 from genparams.errors import GenparamsError
-from genparams.runtime.binding import check_each
-from genparams.runtime.naming import ENTRY_KEY, join_prefix
-from genparams.runtime.rclpy_internals import descriptor_check, undeclared_check
-from genparams.runtime.rule_check import violations
-from genparams.runtime.schema_message import class_spec, why_not_run
-from genparams.runtime.spec import CompiledParam, CompiledSchema, compile_uncached
-from genparams.runtime.types import TYPES
-from genparams.runtime.validators import Custom, Validator
+from genparams.runtime.core.naming import ENTRY_KEY, join_prefix
+from genparams.runtime.core.rule_check import violations
+from genparams.runtime.core.schema_message import class_spec, why_not_run
+from genparams.runtime.core.spec import CompiledParam, CompiledSchema, compile_uncached
+from genparams.runtime.core.types import TYPES
+from genparams.runtime.core.validators import Custom, Validator
+from genparams.runtime.node.binding import check_each
+from genparams.runtime.node.rclpy_internals import descriptor_check, undeclared_check
 
 
 class SchemaMessageError(GenparamsError, ValueError):

@@ -17,7 +17,7 @@ from typing import Any
 from starlette.responses import Response, StreamingResponse
 from starlette.types import Receive, Scope, Send
 
-from genparams.runtime.json_codec import dumps
+from genparams.runtime.core.json_codec import dumps
 from genparams.tune.graph import Graph
 from genparams.tune.json_response import JSONResponse
 

@@ -7,7 +7,7 @@ everything ``ros2 param`` does: the parameter services of each node, the latched
 Futures; :func:`wait_future` and the web app's bridge turn them into results.
 
 A schema message is trusted only when it is well formed (read by
-:mod:`~genparams.runtime.schema_message`) and every node that published on the
+:mod:`~genparams.runtime.core.schema_message`) and every node that published on the
 topic is the node the topic belongs to; otherwise the node gets a problem in
 place of its schema, and the rest of the graph is unaffected.
 """
@@ -39,8 +39,8 @@ from rclpy.qos import (
 from rclpy.subscription import Subscription
 from std_msgs.msg import String
 
-from genparams.runtime.schema_message import SchemaProblem, read_schema_message
-from genparams.runtime.schema_topic import SCHEMA_TOPIC_SUFFIX
+from genparams.runtime.core.schema_message import SchemaProblem, read_schema_message
+from genparams.runtime.node.schema_topic import SCHEMA_TOPIC_SUFFIX
 from genparams.tune.reader import (
     ParameterReader,
     answers,

@@ -10,7 +10,7 @@ from typing import Any
 
 from starlette.responses import JSONResponse as StarletteJSONResponse
 
-from genparams.runtime.json_codec import dumps
+from genparams.runtime.core.json_codec import dumps
 
 
 class JSONResponse(StarletteJSONResponse):

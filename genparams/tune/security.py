@@ -30,8 +30,8 @@ from urllib.parse import parse_qs
 
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
-from genparams.runtime.errors import GenparamsError
-from genparams.runtime.json_codec import API_LIMITS, dumps
+from genparams.runtime.core.errors import GenparamsError
+from genparams.runtime.core.json_codec import API_LIMITS, dumps
 
 LOG = logging.getLogger("genparams.tune")
 TOKEN_HEADER = "x-genparams-token"

@@ -17,8 +17,8 @@ from genparams.gpl.convert import Imported, import_gpl
 from genparams.gpl.emit import schema_text, stub_text
 from genparams.paramsfile.check_params import check_params
 from genparams.paramsfile.params_reader import read_params_file
-from genparams.runtime.errors import ParameterDeclarationError
-from genparams.runtime.naming import NODE_PARAMETERS
+from genparams.runtime.core.errors import ParameterDeclarationError
+from genparams.runtime.core.naming import NODE_PARAMETERS
 from genparams.schema.loader import load_yaml
 from tests import corpus
 from tests.gpl.corpus_cases import (

@@ -14,7 +14,7 @@ from rclpy.parameter import Parameter
 
 import genparams
 from genparams.outputs.json_schema import params_file_schema
-from genparams.runtime.errors import ParameterDeclarationError
+from genparams.runtime.core.errors import ParameterDeclarationError
 from tests.support import RosHarness, load_generated
 
 SCHEMA = Path(__file__).parent / "cases" / "features.yaml"

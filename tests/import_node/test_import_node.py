@@ -12,7 +12,7 @@ import pytest
 import yaml
 from rclpy.parameter import parameter_value_to_python
 
-from genparams.runtime.naming import NODE_PARAMETERS
+from genparams.runtime.core.naming import NODE_PARAMETERS
 from tests.support import ROOT, RosHarness, ServiceClient, load_generated
 from tests.tune.support import demo_nodes, unique
 

@@ -11,7 +11,7 @@ from rclpy.exceptions import ParameterImmutableException
 import genparams
 from genparams.audit.findings import DRIFT_DEFAULT, VIOLATION, Finding
 from genparams.errors import CommandError, GenparamsError, render_problem
-from genparams.runtime.consistency import UndeclareRefusedError
+from genparams.runtime.node.consistency import UndeclareRefusedError
 from genparams.schema.errors import Location, SchemaError, SchemaProblem
 
 
@@ -34,8 +34,8 @@ def test_every_error_genparams_defines_is_a_genparams_error() -> None:
 
 
 def test_errors_keep_the_kinds_users_catch() -> None:
-    from genparams.runtime.errors import RemoteParameterError
-    from genparams.runtime.types import ValueTypeError
+    from genparams.runtime.core.errors import RemoteParameterError
+    from genparams.runtime.core.types import ValueTypeError
 
     assert issubclass(UndeclareRefusedError, ParameterImmutableException)
     assert issubclass(RemoteParameterError, RuntimeError)

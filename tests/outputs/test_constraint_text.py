@@ -20,10 +20,10 @@ from genparams.api import load_schema
 from genparams.outputs.json_schema import _parameter_name
 from genparams.outputs.markup import md_text
 from genparams.outputs.render import python_literal
-from genparams.runtime.declaring import descriptor_for
-from genparams.runtime.spec import CompiledParam, compile_schema
-from genparams.runtime.types import TYPES
-from genparams.runtime.validators import RosRange
+from genparams.runtime.core.spec import CompiledParam, compile_schema
+from genparams.runtime.core.types import TYPES
+from genparams.runtime.core.validators import RosRange
+from genparams.runtime.node.declaring import descriptor_for
 from genparams.schema.model import Parameter, Schema
 from tests.golden import OutputCase, all_output_cases, case_dirs, case_schema, runtime_cases
 from tests.readback import params_class

@@ -12,7 +12,7 @@ from genparams.api import load_schema
 from genparams.cli import main
 from genparams.outputs.yaml_text import double_text, string_text
 from genparams.paramsfile.ros_yaml import ros_scalar
-from genparams.runtime.naming import ENTRY_KEY
+from genparams.runtime.core.naming import ENTRY_KEY
 from tests.golden import EXAMPLE_SCHEMA, output_cases
 from tests.support import RosHarness, load_generated
 

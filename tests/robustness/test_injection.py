@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 
 import genparams
-from genparams.runtime.tree import get_path
+from genparams.runtime.core.tree import get_path
 from genparams.schema.errors import SchemaError
 from tests.readback import mismatches, params_class, read_back
 from tests.support import RosHarness, import_file

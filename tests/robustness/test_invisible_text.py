@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 
 from genparams.cli import main
-from genparams.runtime.visible import visible
+from genparams.runtime.core.visible import visible
 from genparams.schema.errors import Location, SchemaProblem
 from tests.golden import ROOT
 

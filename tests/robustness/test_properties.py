@@ -24,7 +24,7 @@ from genparams.outputs.params_file import default_params_file
 from genparams.outputs.render import render_docs, render_params_file
 from genparams.paramsfile.check_params import check_params
 from genparams.paramsfile.params_reader import read_params_file
-from genparams.runtime.tree import get_path
+from genparams.runtime.core.tree import get_path
 from tests.budget import examples
 from tests.golden import ROOT
 from tests.readback import mismatches, params_class, read_back, same

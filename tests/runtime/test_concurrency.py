@@ -26,7 +26,7 @@ from rclpy.parameter import Parameter
 from rclpy.parameter_client import AsyncParameterClient
 
 from genparams.runtime import Changes
-from genparams.runtime.consistency import parameter_set_lock
+from genparams.runtime.node.consistency import parameter_set_lock
 from tests.support import RosHarness, load_generated, unique_name
 
 SCHEMA = """\

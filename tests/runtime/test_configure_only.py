@@ -11,7 +11,7 @@ from rclpy.lifecycle import Node as LifecycleNode
 from rclpy.lifecycle import State, TransitionCallbackReturn
 from rclpy.parameter import Parameter
 
-from genparams.runtime.errors import RemoteSetError
+from genparams.runtime.core.errors import RemoteSetError
 from tests.runtime.schemas import MOTION, generate
 from tests.support import RosHarness, unique_name
 

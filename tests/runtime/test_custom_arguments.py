@@ -10,8 +10,8 @@ from typing import Any
 import pytest
 from rclpy.parameter import Parameter
 
-from genparams.runtime.validator_kinds import ValidatorArgumentError, build_validator
-from genparams.runtime.validators import Custom
+from genparams.runtime.core.validator_kinds import ValidatorArgumentError, build_validator
+from genparams.runtime.core.validators import Custom
 from tests.support import RosHarness, load_generated
 
 HERE = __name__

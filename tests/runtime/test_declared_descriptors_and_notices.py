@@ -11,7 +11,7 @@ from rclpy.node import Node
 from rclpy.parameter import Parameter
 
 from genparams.runtime import ParameterDeclarationError
-from genparams.runtime.errors import DetachedSnapshotError
+from genparams.runtime.core.errors import DetachedSnapshotError
 from tests.support import RosHarness, load_generated
 
 SCHEMA = """\

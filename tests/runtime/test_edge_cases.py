@@ -15,7 +15,7 @@ from rclpy.exceptions import ParameterImmutableException
 from rclpy.parameter import Parameter
 
 from genparams.runtime import Changes, ParameterDeclarationError
-from genparams.runtime.errors import RemoteSetError
+from genparams.runtime.core.errors import RemoteSetError
 from tests.runtime.schemas import MOTION, SAFETY, generate
 from tests.support import RosHarness
 

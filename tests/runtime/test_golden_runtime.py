@@ -12,11 +12,11 @@ from typing import Any
 import pytest
 import yaml
 
-from genparams.runtime.declaring import ros_parameter
-from genparams.runtime.entries import expand
-from genparams.runtime.spec import compile_schema
-from genparams.runtime.tree import get_path
-from genparams.runtime.types import TYPES
+from genparams.runtime.core.entries import expand
+from genparams.runtime.core.spec import compile_schema
+from genparams.runtime.core.tree import get_path
+from genparams.runtime.core.types import TYPES
+from genparams.runtime.node.declaring import ros_parameter
 from tests.golden import runtime_cases
 from tests.readback import mismatches, params_class, read_back
 from tests.support import RosHarness, import_file

@@ -9,7 +9,7 @@ import types
 
 import pytest
 
-from genparams.runtime.tree import Group, GroupMap, _rebuild, build_tree, to_dict
+from genparams.runtime.core.tree import Group, GroupMap, _rebuild, build_tree, to_dict
 from tests.runtime.schemas import MOTION, generate
 
 

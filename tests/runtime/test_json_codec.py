@@ -8,7 +8,7 @@ from typing import Any
 
 import pytest
 
-from genparams.runtime.json_codec import (
+from genparams.runtime.core.json_codec import (
     API_LIMITS,
     JsonError,
     Limits,

@@ -18,8 +18,8 @@ from rclpy.parameter import Parameter
 
 import genparams
 from genparams.runtime import Changes, GroupMap, ParameterDeclarationError
-from genparams.runtime.consistency import parameter_set_lock
-from genparams.runtime.rewrites import add_rewrite
+from genparams.runtime.node.consistency import parameter_set_lock
+from genparams.runtime.node.rewrites import add_rewrite
 from tests.support import ROOT, RosHarness, ServiceClient, load_generated
 
 ARM = """\

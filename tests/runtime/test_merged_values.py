@@ -8,8 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from genparams.runtime.rule_check import MergedValues, broken_rules
-from genparams.runtime.spec import compile_schema
+from genparams.runtime.core.rule_check import MergedValues, broken_rules
+from genparams.runtime.core.spec import compile_schema
 from tests.support import load_generated
 
 SCHEMA = """\

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from genparams.runtime.naming import (
+from genparams.runtime.core.naming import (
     absolute,
     attribute_name,
     attribute_parts,

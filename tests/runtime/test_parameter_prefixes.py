@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from genparams.runtime.binding import check_prefix
+from genparams.runtime.core.naming import check_prefix
 
 
 @pytest.mark.parametrize("prefix", ["", "camera", "robot.front_camera"])

@@ -1,7 +1,7 @@
 """Every rclpy internal genparams relies on still behaves as rclpy_internals.py says.
 
 If one of these fails after an rclpy upgrade, genparams' commit discipline is
-no longer sound on that release: read genparams/runtime/rclpy_internals.py.
+no longer sound on that release: read genparams/runtime/node/rclpy_internals.py.
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ from rclpy.lifecycle import Node as LifecycleNode
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
-from genparams.runtime import rclpy_internals as internals
+from genparams.runtime.node import rclpy_internals as internals
 from tests.support import RosHarness, unique_name
 
 

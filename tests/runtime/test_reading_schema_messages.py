@@ -13,10 +13,10 @@ from typing import Any
 
 import pytest
 
-from genparams.runtime.json_codec import dumps
-from genparams.runtime.schema_message import SchemaProblem, read_schema_message
-from genparams.runtime.schema_topic import class_text, node_message_text
-from genparams.runtime.spec import compile_schema
+from genparams.runtime.core.json_codec import dumps
+from genparams.runtime.core.schema_message import SchemaProblem, read_schema_message
+from genparams.runtime.core.spec import compile_schema
+from genparams.runtime.node.schema_topic import class_text, node_message_text
 from tests.support import ROOT, load_generated
 
 NODE = "/robot/arm"

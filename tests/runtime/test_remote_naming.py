@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from genparams.runtime.remote import RemoteParams
+from genparams.runtime.remote.client import RemoteParams
 from tests.support import ROOT, RosHarness, load_generated
 
 

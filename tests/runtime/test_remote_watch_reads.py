@@ -16,7 +16,7 @@ from rclpy.parameter import Parameter
 from rclpy.qos import QoSProfile, ReliabilityPolicy, qos_profile_parameter_events
 
 from genparams.runtime import Changes, RemoteParameterError
-from genparams.runtime.remote_watch import RemoteWatch
+from genparams.runtime.remote.watch import RemoteWatch
 from tests.support import ROOT, RosHarness, load_generated
 
 ARM_VALUES = {

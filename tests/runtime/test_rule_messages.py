@@ -10,8 +10,8 @@ from typing import Any
 import pytest
 
 import genparams
-from genparams.runtime.expressions import RuleError, compile_expression
-from genparams.runtime.rules import compile_rule
+from genparams.runtime.core.expressions import RuleError, compile_expression
+from genparams.runtime.core.rules import compile_rule
 from genparams.schema.errors import SchemaError
 
 TYPES = {

@@ -16,8 +16,8 @@ from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from std_msgs.msg import String
 
 from genparams import __version__
-from genparams.runtime.schema_topic import SCHEMA_TOPIC_SUFFIX, class_text
-from genparams.runtime.spec import compile_schema
+from genparams.runtime.core.spec import compile_schema
+from genparams.runtime.node.schema_topic import SCHEMA_TOPIC_SUFFIX, class_text
 from tests.support import ROOT, RosHarness, load_generated
 
 GRIPPER = """\

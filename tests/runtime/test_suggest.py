@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from genparams.runtime.suggest import closest, did_you_mean, did_you_mean_name
+from genparams.runtime.core.suggest import closest, did_you_mean, did_you_mean_name
 
 
 def test_a_close_word_is_offered() -> None:

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from genparams.runtime.suggest import closest, did_you_mean_name
+from genparams.runtime.core.suggest import closest, did_you_mean_name
 
 NAMES = ["control.gain", "camera.fps"]
 

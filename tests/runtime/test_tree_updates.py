@@ -6,7 +6,7 @@ from typing import Any
 
 import pytest
 
-from genparams.runtime.tree import (
+from genparams.runtime.core.tree import (
     Group,
     GroupMap,
     build_tree,

@@ -9,7 +9,7 @@ from typing import Any
 
 import pytest
 
-from genparams.runtime.types import TYPES, TYPES_BY_ROS_TYPE, ValueTypeError
+from genparams.runtime.core.types import TYPES, TYPES_BY_ROS_TYPE, ValueTypeError
 
 
 @pytest.mark.parametrize(

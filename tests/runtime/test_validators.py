@@ -8,8 +8,8 @@ from typing import Any
 
 import pytest
 
-from genparams.runtime.validator_kinds import ValidatorArgumentError, build_validator
-from genparams.runtime.validators import (
+from genparams.runtime.core.validator_kinds import ValidatorArgumentError, build_validator
+from genparams.runtime.core.validators import (
     Bounds,
     Compare,
     Custom,

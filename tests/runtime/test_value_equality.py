@@ -9,9 +9,8 @@ from typing import Any
 import pytest
 
 from genparams.runtime import Changes, ParameterDeclarationError
-from genparams.runtime.changes import Change
-from genparams.runtime.errors import RemoteSetError
-from genparams.runtime.values import same_value
+from genparams.runtime.core.changes import Change, same_value
+from genparams.runtime.core.errors import RemoteSetError
 
 NAN = math.nan
 OTHER_NAN = float("nan")  # another object: a tuple compares its items by identity first

@@ -8,8 +8,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from genparams.runtime.expressions import RuleError, compile_expression
-from genparams.runtime.rules import compile_rule
+from genparams.runtime.core.expressions import RuleError, compile_expression
+from genparams.runtime.core.rules import compile_rule
 
 TYPES = {
     "width": "int",

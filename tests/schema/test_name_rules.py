@@ -9,7 +9,7 @@ import jsonschema
 
 from genparams.outputs.json_schema import NODE_KEY_PATTERN
 from genparams.outputs.schema_paths import ENTRY_KEY_PATTERN
-from genparams.runtime import naming
+from genparams.runtime.core import naming
 from genparams.schema.resources import resource_dir
 
 

@@ -7,8 +7,8 @@ import json
 from typing import Any
 
 from genparams.outputs.json_schema import _KEYWORD_BUILDERS
-from genparams.runtime.validator_kinds import KINDS, build_validator
-from genparams.runtime.validators import Custom
+from genparams.runtime.core.validator_kinds import KINDS, build_validator
+from genparams.runtime.core.validators import Custom
 from genparams.schema.resources import resource_dir
 
 SAMPLE_ARGUMENTS: dict[str, Any] = {

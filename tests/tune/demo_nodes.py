@@ -139,8 +139,8 @@ def loose_node(name: str, workdir: Path) -> Node:
     What a node in another language, or an older build, may do: the audit, not
     the node, has to catch the values its schema forbids.
     """
-    from genparams.runtime.schema_topic import publish_schema
-    from genparams.runtime.spec import compile_schema
+    from genparams.runtime.core.spec import compile_schema
+    from genparams.runtime.node.schema_topic import publish_schema
 
     spec = params_class("motion", workdir)._SPEC
     node = Node(name)

@@ -12,7 +12,7 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import TYPE_CHECKING, Any
 
-from genparams.runtime.json_codec import dumps
+from genparams.runtime.core.json_codec import dumps
 from tests.support import ROOT
 
 if TYPE_CHECKING:

@@ -8,8 +8,8 @@ from typing import Any
 
 from genparams.audit.findings import NOT_CHECKED, VIOLATION
 from genparams.audit.schema_checks import check_node
-from genparams.runtime.json_codec import dumps
-from genparams.runtime.schema_message import read_schema_message
+from genparams.runtime.core.json_codec import dumps
+from genparams.runtime.core.schema_message import read_schema_message
 
 NODE = "/probe"
 

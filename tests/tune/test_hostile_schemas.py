@@ -20,9 +20,9 @@ from typing import Any
 import pytest
 from playwright.sync_api import expect, sync_playwright
 
-from genparams.runtime.json_codec import loads
-from genparams.runtime.schema_topic import SCHEMA_TOPIC_SUFFIX, class_text, node_message_text
-from genparams.runtime.spec import compile_schema
+from genparams.runtime.core.json_codec import loads
+from genparams.runtime.core.spec import compile_schema
+from genparams.runtime.node.schema_topic import SCHEMA_TOPIC_SUFFIX, class_text, node_message_text
 from genparams.tune.server import TuneServer
 from tests.support import ROOT, load_generated
 from tests.tune.support import (

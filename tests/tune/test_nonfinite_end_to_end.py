@@ -15,7 +15,7 @@ from typing import Any
 import pytest
 from playwright.sync_api import expect, sync_playwright
 
-from genparams.runtime.json_codec import loads
+from genparams.runtime.core.json_codec import loads
 from genparams.tune.server import TuneServer
 from tests.support import ROOT
 from tests.tune.support import (

@@ -11,7 +11,7 @@ from rclpy.node import Node
 from std_msgs.msg import String
 
 from genparams import __version__
-from genparams.runtime.schema_topic import SCHEMA_TOPIC_SUFFIX
+from genparams.runtime.node.schema_topic import SCHEMA_TOPIC_SUFFIX
 from genparams.tune.graph import SCHEMA_QOS
 from tests.support import ROOT, RosHarness, load_generated
 
@@ -90,7 +90,7 @@ def test_the_topic_can_be_turned_off(ros: RosHarness, tmp_path: Path) -> None:
 def test_the_assembled_text_is_the_sorted_json_of_the_message(
     ros: RosHarness, tmp_path: Path
 ) -> None:
-    from genparams.runtime.schema_topic import SchemaPublisher
+    from genparams.runtime.node.schema_topic import SchemaPublisher
 
     arm = load_generated(ROOT / "examples/arm/arm.yaml", tmp_path)
     node = ros.node()

@@ -27,26 +27,34 @@ Two on-set checks keep node and view in step around that:
 from __future__ import annotations
 
 import functools
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from rcl_interfaces.msg import SetParametersResult
+from rclpy.node import Node
 from rclpy.parameter import Parameter
 
-from genparams.runtime import rclpy_internals as internals
-from genparams.runtime.changes import Change
-from genparams.runtime.declaring import descriptor_for, replace_batch, ros_parameter
-from genparams.runtime.deprecation import Notices
-from genparams.runtime.entries import expand, key_slot, map_chain, open_maps, template_keys
-from genparams.runtime.naming import join_prefix, strip_prefix
-from genparams.runtime.overrides import OverrideReader
-from genparams.runtime.resolve import resolve_values
-from genparams.runtime.spec import CompiledParam, CompiledSchema
-from genparams.runtime.tree import get_path
+from genparams.runtime.core.changes import Change
+from genparams.runtime.core.entries import expand, key_slot, map_chain, open_maps, template_keys
+from genparams.runtime.core.naming import join_prefix, strip_prefix
+from genparams.runtime.core.resolve import resolve_values
+from genparams.runtime.core.spec import CompiledParam, CompiledSchema
+from genparams.runtime.core.tree import get_path
+from genparams.runtime.node import rclpy_internals as internals
+from genparams.runtime.node.declaring import descriptor_for, replace_batch, ros_parameter
+from genparams.runtime.node.deprecation import Notices
+from genparams.runtime.node.overrides import OverrideReader
 
-if TYPE_CHECKING:
-    from genparams.runtime.binding import Binding
+
+@dataclass(frozen=True)
+class EntryOwner:
+    """What mapped entries use of the class declared on a node that owns them."""
+
+    node: Node
+    prefix: str
+    declared: Mapping[str, CompiledParam]  # its parameters by full ROS name, kept current by it
+    own_check: Callable[[Sequence[Parameter]], SetParametersResult]  # genparams' on-set callback
 
 
 @dataclass(frozen=True)
@@ -64,19 +72,19 @@ class EntryPlan:
 
 
 class MappedEntries:
-    """Keeps one binding's mapped entries in step with its key parameters."""
+    """Keeps the mapped entries of one declared class in step with its key parameters."""
 
     def __init__(
         self,
-        binding: Binding[Any],
+        owner: EntryOwner,
         compiled: CompiledSchema,
         entries: Mapping[str, CompiledParam],
         notices: Notices,
     ) -> None:
-        self.binding = binding
+        self.owner = owner
         self.compiled = compiled
         self.notices = notices
-        self.full_name = functools.partial(join_prefix, binding.prefix)
+        self.full_name = functools.partial(join_prefix, owner.prefix)
         self.entries = dict(entries)  # relative name -> parameter, in key order
         # relative names of key parameters (open groups have none: their keys stay)
         self.key_names = frozenset(n for n in compiled.maps.values() if n in compiled.parameters)
@@ -102,7 +110,7 @@ class MappedEntries:
     @classmethod
     def attach(
         cls,
-        binding: Binding[Any],
+        owner: EntryOwner,
         compiled: CompiledSchema,
         parameters: Mapping[str, CompiledParam],
         notices: Notices,
@@ -110,19 +118,21 @@ class MappedEntries:
         if not compiled.maps:
             return None
         entries = {n: p for n, p in parameters.items() if n not in compiled.parameters}
-        return cls(binding, compiled, entries, notices)
+        return cls(owner, compiled, entries, notices)
 
     def changes_keys(self, updates: Mapping[CompiledParam, Any]) -> bool:
         return any(param.name in self.key_names for param in updates)
 
     def check(
         self,
+        current: Any,
         parameters: Sequence[Parameter],
         typed: Mapping[CompiledParam, Any],
         declaring: bool,
     ) -> list[str]:
         """Refuse sets of undeclared entries, and changes of keys whose new entries cannot be
-        declared (bad override, refused by another on-set callback)."""
+        declared (bad override, refused by another on-set callback). ``current`` is the
+        owner's committed view."""
         if not declaring:  # the entries' own declaration round declares them
             strays = [p.name for p in parameters if self.is_undeclared_entry(p.name)]
             if strays:
@@ -135,13 +145,13 @@ class MappedEntries:
         if not proposed:
             return []
         values = {
-            name: get_path(self.binding.current, self.compiled.parameters[name].attribute_path)
+            name: get_path(current, self.compiled.parameters[name].attribute_path)
             for name in self.key_names
         }
         values.update(proposed)
         expanded = expand(self.compiled, {**values, **self.open_keys}, self.entries)
         added = {n: p for n, p in expanded.items() if n not in self.entries}
-        reader = OverrideReader(self.binding.node, self.full_name)
+        reader = OverrideReader(self.owner.node, self.full_name)
         new_values, problems = resolve_values(
             self.compiled, reader.read(added), self.full_name, parameters=added
         )
@@ -156,14 +166,14 @@ class MappedEntries:
         return [f"{changed}: the new entries were refused: {refusal}"]
 
     def is_undeclared_entry(self, full_name: str) -> bool:
-        """``full_name`` has the shape of an entry of this binding but is not declared."""
-        if full_name in self.binding.owned:
+        """``full_name`` has the shape of an entry of the owner but is not declared."""
+        if full_name in self.owner.declared:
             return False
-        name = strip_prefix(self.binding.prefix, full_name)
+        name = strip_prefix(self.owner.prefix, full_name)
         if name is None:
             return False
         shaped = any(template_keys(template, name) is not None for template in self.templates)
-        return shaped and not self.binding.node.has_parameter(full_name)
+        return shaped and not self.owner.node.has_parameter(full_name)
 
     def _refusal_of_others(
         self,
@@ -172,12 +182,12 @@ class MappedEntries:
         removed: Sequence[str],
     ) -> str | None:
         """What another on-set callback of the node says to the entries' declaration round."""
-        node = self.binding.node
+        node = self.owner.node
         batch = [ros_parameter(p, self.full_name(n), values[n]) for n, p in added.items()]
         batch.extend(Parameter(self.full_name(name)) for name in removed)
         if not batch:
             return None
-        ours = self.binding.sets.check  # genparams' own check passes the round by design
+        ours = self.owner.own_check  # genparams' own check passes the round by design
         for callback in internals.on_set_callbacks(node):
             if callback == ours:
                 continue
@@ -188,8 +198,8 @@ class MappedEntries:
 
     def plan(self, current: Any, updates: Mapping[CompiledParam, Any]) -> EntryPlan | None:
         """The plan of a change of keys the node stored; None if its entries cannot be made."""
-        binding = self.binding
-        values = {p.name: get_path(current, p.attribute_path) for p in binding.owned.values()}
+        owner = self.owner
+        values = {p.name: get_path(current, p.attribute_path) for p in owner.declared.values()}
         changed = []
         for param, value in updates.items():
             if values[param.name] != value:
@@ -200,14 +210,14 @@ class MappedEntries:
         entries = expand(self.compiled, {**fixed, **self.open_keys}, self.entries)
         added = {n: p for n, p in entries.items() if n not in self.entries}
         removed = [n for n in self.entries if n not in entries]
-        reader = OverrideReader(binding.node, self.full_name)
+        reader = OverrideReader(owner.node, self.full_name)
         given = reader.read(added)
         new_values, problems = resolve_values(
             self.compiled, given, self.full_name, parameters=added
         )
         problems = reader.with_problems(problems)
         if problems:
-            binding.node.get_logger().error(
+            owner.node.get_logger().error(
                 "mapped entries keep their previous keys: " + "; ".join(problems)
             )
             return None
@@ -219,7 +229,8 @@ class MappedEntries:
         return EntryPlan(added, new_values, removed, entries, after, changed, reader, list(given))
 
     def replace_on_node(self, plan: EntryPlan) -> bool:
-        """Declare the plan's new entries and undeclare its removed ones, in one atomic change."""
+        """Declare the plan's new entries and undeclare its removed ones, in one atomic change;
+        the plan's table of entries is then this one's."""
         declarations = []
         for name, param in plan.declare.items():
             full_name = self.full_name(name)
@@ -230,12 +241,12 @@ class MappedEntries:
                 )
             )
         plan.reader.release_predeclared()
-        result = replace_batch(
-            self.binding.node, declarations, [self.full_name(n) for n in plan.undeclare]
-        )
+        node = self.owner.node
+        result = replace_batch(node, declarations, [self.full_name(n) for n in plan.undeclare])
         if not result.successful:
-            self.binding.node.get_logger().error(f"cannot change mapped entries: {result.reason}")
+            node.get_logger().error(f"cannot change mapped entries: {result.reason}")
             return False
+        self.entries = plan.entries
         for name in plan.given:
             if plan.declare[name].spec.deprecated:
                 self.notices.deprecated(self.full_name(name), plan.declare[name].spec.deprecated)

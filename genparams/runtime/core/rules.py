@@ -2,7 +2,7 @@
 
 The code generator uses this module to check rules and the schema defaults
 against them; the runtime to check every proposed change. The expression
-language lives in genparams.runtime.expressions.
+language lives in genparams.runtime.core.expressions.
 """
 
 from __future__ import annotations
@@ -10,8 +10,8 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
 
-from genparams.runtime.expression_words import kind_words
-from genparams.runtime.expressions import Expression, RuleError, Values, compile_expression
+from genparams.runtime.core.expression_words import kind_words
+from genparams.runtime.core.expressions import Expression, RuleError, Values, compile_expression
 
 __all__ = ["CompiledRule", "RuleError", "compile_rule", "rules_by_parameter"]
 

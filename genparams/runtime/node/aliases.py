@@ -16,10 +16,10 @@ from rcl_interfaces.msg import SetParametersResult
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
-from genparams.runtime.declaring import Declaration, descriptor_for, ros_parameter
-from genparams.runtime.deprecation import Notices
-from genparams.runtime.rewrites import add_rewrite
-from genparams.runtime.spec import CompiledParam
+from genparams.runtime.core.spec import CompiledParam
+from genparams.runtime.node.declaring import Declaration, descriptor_for, ros_parameter
+from genparams.runtime.node.deprecation import Notices
+from genparams.runtime.node.rewrites import add_rewrite
 
 _ACCEPTED = SetParametersResult(successful=True)
 

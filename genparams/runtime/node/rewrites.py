@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 
 from rclpy.parameter import Parameter
 
-from genparams.runtime.spec import CompiledParam
+from genparams.runtime.core.spec import CompiledParam
 
 if TYPE_CHECKING:
     from rclpy.node import Node

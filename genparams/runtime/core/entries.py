@@ -7,9 +7,9 @@ from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import replace
 from typing import Any
 
-from genparams.runtime.naming import ENTRY_KEY, ENTRY_KEY_RULE, OVERRIDE_KEYS, is_entry_key
-from genparams.runtime.resolve import resolve_values
-from genparams.runtime.spec import CompiledParam, CompiledSchema
+from genparams.runtime.core.naming import ENTRY_KEY, ENTRY_KEY_RULE, OVERRIDE_KEYS, is_entry_key
+from genparams.runtime.core.resolve import resolve_values
+from genparams.runtime.core.spec import CompiledParam, CompiledSchema
 
 
 def map_chain(template_name: str) -> tuple[str, ...]:

@@ -11,8 +11,8 @@ import sys
 from collections.abc import Callable, Collection, Iterable, Iterator, Mapping
 from typing import Any, ClassVar, TypeGuard, TypeVar, cast, final
 
-from genparams.runtime.naming import ENTRY_KEY, MAP_SLOT, attribute_name
-from genparams.runtime.values import same_value
+from genparams.runtime.core.changes import same_value
+from genparams.runtime.core.naming import ENTRY_KEY, MAP_SLOT, attribute_name
 
 _READ_ONLY = (
     "{cls}.{name} is read-only: change parameters through the node "

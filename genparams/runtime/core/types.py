@@ -14,7 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, ClassVar, TypeAlias
 
-from genparams.runtime.errors import GenparamsError
+from genparams.runtime.core.errors import GenparamsError
 
 RosValue: TypeAlias = (
     bool

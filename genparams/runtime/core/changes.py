@@ -1,14 +1,51 @@
-"""Equality of typed values as a change means it: a NaN equals a NaN.
+"""What counts as a change, and what ``on_change`` subscribers receive of one.
+
+A value is changed unless it is the same: a NaN is the same as a NaN.
 
 IEEE says NaN != NaN, so a parameter holding NaN would count as changed by
 every set of NaN, waking ``on_change`` with (nan, nan) and making a snapshot
 unequal to itself. A parameter either holds NaN or not: re-applying the same
 value, NaN included, is no change.
+
+Subscribers receive the committed change, with values before and after.
 """
 
 from __future__ import annotations
 
-from typing import Any
+from collections.abc import Iterator
+from dataclasses import dataclass
+from typing import Any, Generic, TypeVar
+
+P = TypeVar("P")
+
+
+@dataclass(frozen=True)
+class Change:
+    name: str  # dotted ROS name relative to the class's prefix
+    old: Any
+    new: Any
+
+
+@dataclass(frozen=True)
+class Changes(Generic[P]):
+    """One accepted set: ``before`` and ``after`` are consistent snapshots."""
+
+    before: P
+    after: P
+    changed: tuple[Change, ...]
+
+    @property
+    def names(self) -> frozenset[str]:
+        return frozenset(c.name for c in self.changed)
+
+    def __contains__(self, name: object) -> bool:
+        return any(c.name == name for c in self.changed)
+
+    def __iter__(self) -> Iterator[Change]:
+        return iter(self.changed)
+
+    def __len__(self) -> int:
+        return len(self.changed)
 
 
 def same_value(a: Any, b: Any) -> bool:

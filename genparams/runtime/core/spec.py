@@ -6,8 +6,7 @@ from collections.abc import Collection, Iterable, Mapping
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
-from genparams.runtime.lifecycle_text import CONFIGURE_ONLY_TEXT
-from genparams.runtime.naming import (
+from genparams.runtime.core.naming import (
     ENTRY_KEY,
     ENTRY_KEY_RULE,
     MAP_SLOT,
@@ -15,13 +14,17 @@ from genparams.runtime.naming import (
     attribute_parts,
     entry_key_problem,
 )
-from genparams.runtime.rules import CompiledRule, RuleError, compile_rule, rules_by_parameter
-from genparams.runtime.types import TYPES, ParamType
-from genparams.runtime.validator_kinds import build_validator
-from genparams.runtime.validators import Bounds, OneOf, RosRange, SubsetOf, Validator
+from genparams.runtime.core.rules import CompiledRule, RuleError, compile_rule, rules_by_parameter
+from genparams.runtime.core.types import TYPES, ParamType
+from genparams.runtime.core.validator_kinds import build_validator
+from genparams.runtime.core.validators import Bounds, OneOf, RosRange, SubsetOf, Validator
 
 if TYPE_CHECKING:
-    from genparams.runtime.tree import Group
+    from genparams.runtime.core.tree import Group
+
+
+CONFIGURE_ONLY_TEXT = "changes only while the lifecycle node is unconfigured or inactive"
+"""The words of ``configure_only``: one source for descriptors, docs and refusals."""
 
 
 @dataclass(frozen=True)

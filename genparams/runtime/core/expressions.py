@@ -25,8 +25,8 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from genparams.runtime.errors import GenparamsError
-from genparams.runtime.expression_words import (
+from genparams.runtime.core.errors import GenparamsError
+from genparams.runtime.core.expression_words import (
     ARITHMETIC,
     ARRAYS,
     EQUALITY,
@@ -37,8 +37,8 @@ from genparams.runtime.expression_words import (
     ORDERING,
     kind_words,
 )
-from genparams.runtime.naming import attribute_parts
-from genparams.runtime.suggest import did_you_mean
+from genparams.runtime.core.naming import attribute_parts
+from genparams.runtime.core.suggest import did_you_mean
 
 MAX_CHECK_LENGTH = 2000
 

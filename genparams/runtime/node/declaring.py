@@ -14,8 +14,8 @@ from rcl_interfaces.msg import (
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
-from genparams.runtime import rclpy_internals as internals
-from genparams.runtime.spec import CompiledParam
+from genparams.runtime.core.spec import CompiledParam
+from genparams.runtime.node import rclpy_internals as internals
 
 
 def descriptor_for(param: CompiledParam, full_name: str) -> ParameterDescriptor:

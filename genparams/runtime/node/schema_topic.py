@@ -9,7 +9,7 @@ The description is built from the runtime's compiled specs, never from the
 compiler: what is published is exactly what the node enforces. Validators and
 rules appear twice, in words (for people) and as their schema spelling (so a
 client can rebuild the same checks). The text is written by the JSON codec
-(:mod:`~genparams.runtime.json_codec`): a NaN or infinite default or bound
+(:mod:`~genparams.runtime.core.json_codec`): a NaN or infinite default or bound
 travels as ``{"$float": "nan"}``, never as a token a strict reader refuses.
 """
 
@@ -23,9 +23,10 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from genparams import __version__
-from genparams.runtime.json_codec import dumps
-from genparams.runtime.naming import ENTRY_KEY, join_prefix
-from genparams.runtime.spec import CompiledParam, CompiledSchema
+from genparams.runtime.core.json_codec import dumps
+from genparams.runtime.core.naming import ENTRY_KEY, join_prefix
+from genparams.runtime.core.schema_message import FORMAT_VERSION
+from genparams.runtime.core.spec import CompiledParam, CompiledSchema
 
 if TYPE_CHECKING:
     from rclpy.node import Node
@@ -35,7 +36,6 @@ SCHEMA_TOPIC = "~/genparams/schema"
 """Relative to the node: ``/ns/camera`` publishes on ``/ns/camera/genparams/schema``."""
 
 SCHEMA_TOPIC_SUFFIX = "/genparams/schema"
-FORMAT_VERSION = 1
 
 
 def json_value(value: Any) -> Any:

@@ -8,7 +8,7 @@ from typing import Any
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
-from genparams.runtime.rclpy_internals import parameter_overrides
+from genparams.runtime.node.rclpy_internals import parameter_overrides
 
 _MISSING = object()
 

@@ -18,22 +18,14 @@ from typing import Any, Generic, TypeVar
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
-from genparams.runtime.aliases import Aliases, old_names_by_current
-from genparams.runtime.changes import Change, Changes
-from genparams.runtime.consistency import NodeSets, node_sets
-from genparams.runtime.declaring import declare_batch, descriptor_for, ros_parameter
-from genparams.runtime.deprecation import DeprecationWatch, Notices, report_overrides
-from genparams.runtime.entries import resolve_all
-from genparams.runtime.errors import ParameterDeclarationError
-from genparams.runtime.lifecycle import mutability_problem
-from genparams.runtime.mapped import EntryPlan, MappedEntries
-from genparams.runtime.naming import is_ros_token, join_prefix, strip_prefix
-from genparams.runtime.overrides import OverrideReader
-from genparams.runtime.params import Params
-from genparams.runtime.rewrites import add_rewrite, typed_empty_arrays
-from genparams.runtime.rule_check import broken_rules
-from genparams.runtime.spec import CompiledParam, compile_schema
-from genparams.runtime.tree import (
+from genparams.runtime.core.changes import Change, Changes, same_typed_value, same_value
+from genparams.runtime.core.entries import resolve_all
+from genparams.runtime.core.errors import ParameterDeclarationError
+from genparams.runtime.core.naming import check_prefix, join_prefix, strip_prefix
+from genparams.runtime.core.params_view import ParamsView
+from genparams.runtime.core.rule_check import broken_rules
+from genparams.runtime.core.spec import CompiledParam, compile_schema
+from genparams.runtime.core.tree import (
     build_tree,
     copy_node,
     field_names,
@@ -41,19 +33,17 @@ from genparams.runtime.tree import (
     replace_values,
     reuse_values,
 )
-from genparams.runtime.values import same_typed_value, same_value
+from genparams.runtime.node.aliases import Aliases, old_names_by_current
+from genparams.runtime.node.consistency import NodeSets, node_sets
+from genparams.runtime.node.declaring import declare_batch, descriptor_for, ros_parameter
+from genparams.runtime.node.deprecation import DeprecationWatch, Notices, report_overrides
+from genparams.runtime.node.lifecycle import mutability_problem
+from genparams.runtime.node.mapped import EntryOwner, EntryPlan, MappedEntries
+from genparams.runtime.node.overrides import OverrideReader
+from genparams.runtime.node.rewrites import add_rewrite, typed_empty_arrays
 
-P = TypeVar("P", bound=Params)
+P = TypeVar("P", bound=ParamsView)
 _NOT_SET = Parameter.Type.NOT_SET  # reading an Enum member costs on every set
-
-
-def check_prefix(prefix: str) -> str:
-    if prefix and not all(is_ros_token(part) for part in prefix.split(".")):
-        raise ValueError(
-            f"invalid parameter prefix {prefix!r}: dot-separated names of letters, "
-            "digits and underscores, each starting with a letter"
-        )
-    return prefix
 
 
 class Binding(Generic[P]):
@@ -153,7 +143,8 @@ class Binding(Generic[P]):
             old_names = {old: owned[cur] for old, cur in aliases.current_of.items()}
             add_rewrite(node, typed_empty_arrays(collections.ChainMap(binding.owned, old_names)))
         # Mapped groups, old names and deprecations each watch the node on their own.
-        binding.mapped = MappedEntries.attach(binding, compiled, parameters, notices)
+        entry_owner = EntryOwner(node, prefix, binding.owned, sets.check)
+        binding.mapped = MappedEntries.attach(entry_owner, compiled, parameters, notices)
         if compiled.aliases:
             aliases.attach()
         DeprecationWatch.attach(node, notices, binding.owned, compiled)
@@ -168,7 +159,7 @@ class Binding(Generic[P]):
         """This class's part of a request, typed, or the reasons it is refused."""
         typed, reasons = check_each(self.owned, parameters)
         if self.mapped is not None and not reasons:
-            reasons.extend(self.mapped.check(parameters, typed, declaring))
+            reasons.extend(self.mapped.check(self.current, parameters, typed, declaring))
         if reasons:
             return reasons
         if not typed:
@@ -238,9 +229,8 @@ class Binding(Generic[P]):
             owned.update(dropped)
             return False
         owned.update((full(name), param) for name, param in plan.declare.items())
-        mapped.entries = plan.entries
-        spec = mapped.compiled.spec
         before = self.current
+        spec = type(before)._SPEC
         after = build_tree(
             type(before), spec.groups, plan.values, extra={"_binding": None}, maps=spec.maps
         )

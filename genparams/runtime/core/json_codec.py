@@ -25,7 +25,7 @@ from dataclasses import dataclass
 from itertools import accumulate
 from typing import Any
 
-from genparams.runtime.errors import GenparamsError
+from genparams.runtime.core.errors import GenparamsError
 
 FLOAT_TAG = "$float"
 _FLOAT_NAMES = {"nan": math.nan, "inf": math.inf, "-inf": -math.inf}

@@ -15,9 +15,9 @@ from typing import Any
 
 import regex as regex_engine
 
-from genparams.runtime.errors import GenparamsError
-from genparams.runtime.types import INT64_MAX, INT64_MIN
-from genparams.runtime.validators import (
+from genparams.runtime.core.errors import GenparamsError
+from genparams.runtime.core.types import INT64_MAX, INT64_MIN
+from genparams.runtime.core.validators import (
     ALL_TYPES,
     ARRAYS,
     NUMERIC,

@@ -5,12 +5,12 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from typing import TYPE_CHECKING, Any
 
-from genparams.runtime.rules import CompiledRule
-from genparams.runtime.spec import CompiledParam, compile_schema
-from genparams.runtime.tree import get_path
+from genparams.runtime.core.rules import CompiledRule
+from genparams.runtime.core.spec import CompiledParam, compile_schema
+from genparams.runtime.core.tree import get_path
 
 if TYPE_CHECKING:
-    from genparams.runtime.params import Params
+    from genparams.runtime.core.params_view import ParamsView
 
 
 class MergedValues(Mapping[str, Any]):
@@ -18,7 +18,7 @@ class MergedValues(Mapping[str, Any]):
 
     def __init__(
         self,
-        committed: Params,
+        committed: ParamsView,
         proposed: Mapping[str, Any],
         parameters: Mapping[str, CompiledParam],
     ) -> None:
@@ -39,7 +39,7 @@ class MergedValues(Mapping[str, Any]):
 
 
 def broken_rules(
-    committed: Params, proposed: Mapping[str, Any], shown: Callable[[str], str]
+    committed: ParamsView, proposed: Mapping[str, Any], shown: Callable[[str], str]
 ) -> list[str]:
     """A reason per rule that ``proposed`` (relative names, typed values) would break.
 

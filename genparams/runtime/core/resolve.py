@@ -5,8 +5,8 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from typing import Any
 
-from genparams.runtime.spec import CompiledParam, CompiledSchema
-from genparams.runtime.types import ValueTypeError
+from genparams.runtime.core.spec import CompiledParam, CompiledSchema
+from genparams.runtime.core.types import ValueTypeError
 
 
 def resolve_values(

@@ -8,7 +8,7 @@ from collections.abc import Callable, Mapping, Sequence
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
-from genparams.runtime.spec import CompiledParam, CompiledSchema
+from genparams.runtime.core.spec import CompiledParam, CompiledSchema
 
 
 class Notices:

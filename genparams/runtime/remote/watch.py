@@ -12,23 +12,44 @@ import threading
 import time
 import traceback
 from collections.abc import Callable
-from typing import Any, Generic, TypeVar
+from typing import Any, Generic, Protocol, TypeVar
 
 from rcl_interfaces.msg import ParameterEvent
+from rclpy.node import Node
 from rclpy.parameter import parameter_value_to_python
+from rclpy.parameter_client import AsyncParameterClient
 from rclpy.subscription import Subscription
 from rclpy.task import Future
 from rclpy.timer import Timer
 
-from genparams.runtime.changes import Change, Changes
-from genparams.runtime.entries import expand
-from genparams.runtime.params import Params
-from genparams.runtime.remote import RemoteParams, TypedFuture
-from genparams.runtime.spec import CompiledParam
-from genparams.runtime.tree import get_path, replace_values
-from genparams.runtime.types import ValueTypeError
+from genparams.runtime.core.changes import Change, Changes
+from genparams.runtime.core.entries import expand
+from genparams.runtime.core.params_view import ParamsView
+from genparams.runtime.core.spec import CompiledParam, CompiledSchema
+from genparams.runtime.core.tree import get_path, replace_values
+from genparams.runtime.core.types import ValueTypeError
+from genparams.runtime.remote.typed_future import TypedFuture
 
-P = TypeVar("P", bound=Params)
+P = TypeVar("P", bound=ParamsView)
+
+
+class Watched(Protocol[P]):
+    """What a watch uses of the client it follows the target with (``client.RemoteParams``)."""
+
+    @property
+    def node(self) -> Node: ...
+    @property
+    def target(self) -> str: ...
+    @property
+    def client(self) -> AsyncParameterClient: ...
+    @property
+    def compiled(self) -> CompiledSchema: ...
+
+    def get(self) -> TypedFuture[P]:
+        """A full read of the target's parameters, as a snapshot."""
+
+    def relative_name(self, full_name: str) -> str | None:
+        """``full_name`` relative to the prefix; None if it is not under it."""
 
 
 class RemoteWatch(Generic[P]):
@@ -44,7 +65,7 @@ class RemoteWatch(Generic[P]):
     CONNECT_TIMEOUT = 5.0
     READ_ATTEMPTS = 3
 
-    def __init__(self, remote: RemoteParams[P], callback: Callable[[Changes[P]], None]) -> None:
+    def __init__(self, remote: Watched[P], callback: Callable[[Changes[P]], None]) -> None:
         self.remote = remote
         self.callback = callback
         self.lock = threading.RLock()  # events and snapshots may arrive on several threads

@@ -14,13 +14,13 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from typing import TYPE_CHECKING, Any
 
-from genparams.runtime.lifecycle_text import CONFIGURE_ONLY_TEXT
-from genparams.runtime.rclpy_internals import lifecycle_state
+from genparams.runtime.core.spec import CONFIGURE_ONLY_TEXT
+from genparams.runtime.node.rclpy_internals import lifecycle_state
 
 if TYPE_CHECKING:
     from rclpy.node import Node
 
-    from genparams.runtime.spec import CompiledParam
+    from genparams.runtime.core.spec import CompiledParam
 
 CONFIGURE_STATES = frozenset({"unconfigured", "inactive", "configuring", "cleaningup"})
 

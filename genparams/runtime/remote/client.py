@@ -9,8 +9,8 @@ frozen values ``snapshot()`` returns on the node itself.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Generator, Mapping
-from typing import TYPE_CHECKING, Any, Generic, TypeVar, cast
+from collections.abc import Callable, Mapping
+from typing import TYPE_CHECKING, Any, Generic, TypeVar
 
 from rcl_interfaces.msg import ParameterType
 from rclpy.node import Node
@@ -18,43 +18,30 @@ from rclpy.parameter import parameter_value_to_python
 from rclpy.parameter_client import AsyncParameterClient
 from rclpy.task import Future
 
-from genparams.runtime.binding import check_prefix
-from genparams.runtime.changes import Changes
-from genparams.runtime.declaring import ros_parameter
-from genparams.runtime.entries import (
+from genparams.runtime.core.changes import Changes
+from genparams.runtime.core.entries import (
     expand,
     instantiate,
     open_maps,
     override_keys,
     template_keys,
 )
-from genparams.runtime.errors import RemoteParameterError, RemoteSetError
-from genparams.runtime.naming import is_entry_key, join_prefix, strip_prefix
-from genparams.runtime.params import Params
-from genparams.runtime.spec import CompiledParam, compile_schema
-from genparams.runtime.suggest import did_you_mean
-from genparams.runtime.tree import build_tree
-from genparams.runtime.types import ValueTypeError
-from genparams.runtime.visible import visible
+from genparams.runtime.core.errors import RemoteParameterError, RemoteSetError
+from genparams.runtime.core.naming import check_prefix, is_entry_key, join_prefix, strip_prefix
+from genparams.runtime.core.params_view import ParamsView
+from genparams.runtime.core.spec import CompiledParam, compile_schema
+from genparams.runtime.core.suggest import did_you_mean
+from genparams.runtime.core.tree import build_tree
+from genparams.runtime.core.types import ValueTypeError
+from genparams.runtime.core.visible import visible
+from genparams.runtime.node.declaring import ros_parameter
+from genparams.runtime.remote.typed_future import TypedFuture
 
 if TYPE_CHECKING:
-    from genparams.runtime.remote_watch import RemoteWatch
+    from genparams.runtime.remote.watch import RemoteWatch
 
-P = TypeVar("P", bound=Params)
+P = TypeVar("P", bound=ParamsView)
 _NOT_SET = ParameterType.PARAMETER_NOT_SET
-T = TypeVar("T")
-
-
-class TypedFuture(Future, Generic[T]):
-    """An rclpy Future that says what it resolves to."""
-
-    def result(self) -> T | None:
-        """The result once done (None before); raises the failure if there was one."""
-        return cast("T | None", super().result())
-
-    def __await__(self) -> Generator[None, None, T]:
-        result = yield from super().__await__()
-        return cast(T, result)
 
 
 def _fully_qualified(node: Node, target: str) -> str:
@@ -291,7 +278,7 @@ class RemoteParams(Generic[P]):
         from there on is reported), ``latest`` is the newest known snapshot, and
         ``cancel()`` stops watching. The client node must be spun by an executor.
         """
-        from genparams.runtime.remote_watch import RemoteWatch
+        from genparams.runtime.remote.watch import RemoteWatch
 
         return RemoteWatch(self, callback)
 

@@ -2,7 +2,7 @@
 
 Anyone can publish on ``/<node>/genparams/schema``. The text is read with the
 codec's limits, then its shape is checked field by field against format 1
-(the format :mod:`~genparams.runtime.schema_topic` writes), and every
+(the format :mod:`~genparams.runtime.node.schema_topic` writes), and every
 parameter is compiled with the runtime's own validators, as the node compiled
 it. Whatever is wrong comes back as a :class:`SchemaProblem` naming the field,
 never as an exception.
@@ -14,14 +14,16 @@ from collections.abc import Collection, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from genparams.runtime.errors import GenparamsError
-from genparams.runtime.json_codec import JsonError, Limits, loads
-from genparams.runtime.naming import ENTRY_KEY, strip_prefix
-from genparams.runtime.schema_topic import FORMAT_VERSION
-from genparams.runtime.spec import ParamSpec, RuleSpec, SchemaSpec, compile_param
-from genparams.runtime.tree import Group
-from genparams.runtime.types import TYPES
-from genparams.runtime.validators import Custom
+from genparams.runtime.core.errors import GenparamsError
+from genparams.runtime.core.json_codec import JsonError, Limits, loads
+from genparams.runtime.core.naming import ENTRY_KEY, strip_prefix
+from genparams.runtime.core.spec import ParamSpec, RuleSpec, SchemaSpec, compile_param
+from genparams.runtime.core.tree import Group
+from genparams.runtime.core.types import TYPES
+from genparams.runtime.core.validators import Custom
+
+FORMAT_VERSION = 1
+"""The version of the schema message's shape: written by the node, checked by readers."""
 
 SCHEMA_MESSAGE_LIMITS = Limits(max_chars=16 << 20, max_depth=32)
 """16 MiB is about 40,000 described parameters; format 1 nests 9 deep at most."""

@@ -37,24 +37,49 @@ from __future__ import annotations
 import collections
 import threading
 from collections.abc import Callable, Sequence
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Protocol
 
 from rcl_interfaces.msg import SetParametersResult
 from rclpy.exceptions import ParameterImmutableException
 from rclpy.parameter import Parameter
 
-from genparams.runtime import rclpy_internals as internals
-from genparams.runtime.errors import GenparamsError
+from genparams.runtime.core.errors import GenparamsError
+from genparams.runtime.node import rclpy_internals as internals
 
 if TYPE_CHECKING:
     from rclpy.node import Node
 
-    from genparams.runtime.binding import Binding
-    from genparams.runtime.spec import CompiledParam
+    from genparams.runtime.core.spec import CompiledParam
 
 _ATTRIBUTE = "_genparams_sets"
 _INSTALLING = threading.Lock()
 _ACCEPTED = SetParametersResult(successful=True)
+
+
+class DeclaredClass(Protocol):
+    """What the coordinator asks of each class declared on the node (``binding.Binding``)."""
+
+    @property
+    def schema_name(self) -> str: ...
+    @property
+    def prefix(self) -> str: ...
+    @property
+    def live(self) -> object:
+        """The view its user holds."""
+
+    def declares(self, full_name: str) -> bool:
+        """``full_name`` is one of its parameters, or an old name of one."""
+
+    def check(
+        self, parameters: Sequence[Parameter], declaring: bool
+    ) -> dict[CompiledParam, Any] | list[str]:
+        """Its part of a request, typed, or the reasons it is refused."""
+
+    def commit(self, updates: dict[CompiledParam, Any]) -> bool:
+        """Commit values the node stored; False (nothing done) when they change its shape."""
+
+    def reshape(self, updates: dict[CompiledParam, Any]) -> None:
+        """Commit values that change its shape (mapped keys), once every class committed."""
 
 
 class UndeclareRefusedError(ParameterImmutableException, GenparamsError):
@@ -76,7 +101,7 @@ class UndeclareRefusedError(ParameterImmutableException, GenparamsError):
 # One set in progress on the node: whether it declares (declarations and entry changes
 # carry new descriptors), and what genparams' check accepted, per binding. A tuple, not
 # a class: one is made on every set, and a class's __init__ costs about four times more.
-Frame = tuple[bool, dict["Binding[Any]", dict["CompiledParam", Any]]]
+Frame = tuple[bool, dict[DeclaredClass, dict["CompiledParam", Any]]]
 
 
 Delivery = Callable[[], None]
@@ -88,7 +113,7 @@ class NodeSets:
     def __init__(self, node: Node) -> None:
         self.node = node
         self.lock = threading.RLock()
-        self.bindings: list[Binding[Any]] = []
+        self.bindings: list[DeclaredClass] = []
         self.frames: list[Frame] = []
         self.deliveries: collections.deque[Delivery] = collections.deque()
         self.draining = False
@@ -155,7 +180,7 @@ class NodeSets:
         finally:
             self.draining = False
 
-    def owner_of(self, full_name: str) -> Binding[Any] | None:
+    def owner_of(self, full_name: str) -> DeclaredClass | None:
         for binding in self.bindings:
             if binding.declares(full_name):
                 return binding

@@ -33,6 +33,16 @@ def is_ros_token(name: str) -> bool:
     return ROS_TOKEN.fullmatch(name) is not None
 
 
+def check_prefix(prefix: str) -> str:
+    """``prefix`` if it is empty or a dotted ROS name (a class's parameters live under it)."""
+    if prefix and not all(is_ros_token(part) for part in prefix.split(".")):
+        raise ValueError(
+            f"invalid parameter prefix {prefix!r}: dot-separated names of letters, "
+            "digits and underscores, each starting with a letter"
+        )
+    return prefix
+
+
 def is_ros_name(name: str) -> bool:
     """A dotted ROS parameter name relative to a prefix: tokens joined by single dots."""
     return all(is_ros_token(part) for part in name.split("."))
