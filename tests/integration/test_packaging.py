@@ -84,7 +84,15 @@ def venv(wheel: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:
     run([sys.executable, "-m", "venv", "--without-pip", folder], folder.parent)
     # uv comes with the development environment (requirements/uv.txt); its cache keeps it quick.
     lock = folder.parent / "locked-requirements.txt"
-    export = ["export", "--quiet", "--locked", "--all-extras", "--no-emit-project", "-o", lock]
+    export: list[str | Path] = [
+        "export",
+        "--quiet",
+        "--locked",
+        "--all-extras",
+        "--no-emit-project",
+        "-o",
+        lock,
+    ]
     run([VENV_BIN / "uv", *export, "--project", ROOT], folder.parent)
     python = folder / "bin" / "python"
     install: list[str | Path] = [VENV_BIN / "uv", "pip", "install", "--quiet", "--python", python]
