@@ -175,6 +175,9 @@ def resolve_all(
     return parameters, values, problems
 
 
+PLACES_BEYOND = 1000  # see map_places
+
+
 @dataclass(frozen=True)
 class MapPlace:
     """One mapped group of a schema message where it stands on a node: ``path`` is the
@@ -190,21 +193,31 @@ class MapPlace:
         """Keyed by the overrides (``for_each: overrides``), not by a key list."""
         return str(self.group["for_each"]).endswith(OVERRIDE_KEYS)
 
+    @property
+    def fields(self) -> list[Mapping[str, Any]]:
+        """The fields of each entry (one named "" is the entry itself); those of a group
+        inside the entry (``tips.*.force``) are left to that group's own places."""
+        return [f for f in self.group["fields"] if ENTRY_KEY not in str(f["name"]).split(".")]
+
     def entries(self) -> Iterator[tuple[str, Mapping[str, Any]]]:
-        """Each parameter of its entries, by full name, with its field; a field of a group
-        inside the entry (``gains.*.p``) is left to that group's own places."""
+        """Each parameter of its entries, by full name, with its field."""
         for key in self.keys:
-            for field in self.group["fields"]:  # a field named "" is the entry itself
-                if ENTRY_KEY not in str(field["name"]).split("."):
-                    yield ".".join(p for p in (self.path, key, field["name"]) if p), field
+            for field in self.fields:
+                yield ".".join(p for p in (self.path, key, field["name"]) if p), field
 
 
 def map_places(maps: Iterable[Mapping[str, Any]], values: Mapping[str, Any]) -> list[MapPlace]:
     """Every place of the mapped groups of a schema message (``maps``, with full names) on a
     node whose parameters are ``values`` (by full name): a group inside an entry of another
     stands once per key of the outer one. The keys are the key list's value, or for an
-    open group the names declared under it."""
+    open group the names declared under it.
+
+    A node holds a parameter in every place its own schema has (a little more for entries
+    it failed to declare): places past one per parameter, plus PLACES_BEYOND, are not
+    listed, so a schema message nesting groups deep over long lists cannot make the
+    reader expand a product of them."""
     groups = {str(m["path"]): m for m in maps}
+    budget = len(values) + PLACES_BEYOND
 
     def keys_at(group: Mapping[str, Any], path: str) -> tuple[str, ...]:
         if str(group["for_each"]).endswith(OVERRIDE_KEYS):
@@ -220,10 +233,13 @@ def map_places(maps: Iterable[Mapping[str, Any]], values: Mapping[str, Any]) -> 
             return [path]
         head = f"{outer[-1]}.{ENTRY_KEY}." if outer[-1] else f"{ENTRY_KEY}."
         rest = path[len(head) :]
-        found = []
+        found: list[str] = []
         for place in places(outer[-1]):
             for key in keys_at(groups[outer[-1]], place):
+                if len(found) >= budget:
+                    return found
                 found.append(".".join(p for p in (place, key, rest) if p))
         return found
 
-    return [MapPlace(g, p, keys_at(g, p)) for path, g in groups.items() for p in places(path)]
+    listed = [MapPlace(g, p, keys_at(g, p)) for path, g in groups.items() for p in places(path)]
+    return listed[:budget]

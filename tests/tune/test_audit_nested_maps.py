@@ -149,3 +149,18 @@ def test_each_place_follows_the_live_keys(module: types.ModuleType) -> None:
         ("controllers", ("arm",)),
         ("controllers.arm.gains", ("elbow",)),
     }
+
+
+def test_a_message_nesting_deep_over_long_lists_expands_no_product() -> None:
+    """Six groups nested over a list of 50 keys would stand 50**6 times: a node holding
+    a handful of parameters is read in at most one place per parameter, plus a margin."""
+    from genparams.runtime.entries import PLACES_BEYOND, map_places
+
+    field = {"name": "x", "type": "double"}
+    maps = [{"path": "g", "for_each": "keys", "fields": [field]}]
+    for _ in range(5):
+        maps.append({"path": maps[-1]["path"] + ".*.g", "for_each": "keys", "fields": [field]})
+    values = {"keys": [f"k{i}" for i in range(50)]}
+    places = map_places(maps, values)
+    assert len(places) <= len(values) + PLACES_BEYOND
+    assert places[0].path == "g" and len(places[0].keys) == 50
