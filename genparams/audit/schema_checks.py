@@ -12,13 +12,13 @@ trust: otherwise a message naming ``os:system`` would run it on a value.
 
 from __future__ import annotations
 
-from collections.abc import Collection, Iterable, Iterator, Mapping
+from collections.abc import Collection, Iterator, Mapping
 from typing import Any
 
 from genparams.audit.findings import DRIFT_DEFAULT, NOT_CHECKED, VIOLATION, Finding
 from genparams.runtime.core.changes import same_value
-from genparams.runtime.core.entries import keys_under
-from genparams.runtime.core.naming import OVERRIDE_KEYS, strip_prefix
+from genparams.runtime.core.entries import map_places
+from genparams.runtime.core.naming import strip_prefix
 from genparams.runtime.core.rules import RuleError, compile_rule
 from genparams.runtime.core.schema_message import param_from_json, why_not_run
 from genparams.runtime.core.spec import CompiledParam, compile_param
@@ -36,16 +36,12 @@ def not_runnable(check: Any, packages: Collection[str]) -> str | None:
 def described_parameters(
     described: Mapping[str, Any], values: Mapping[str, Any]
 ) -> Iterator[tuple[str, Mapping[str, Any]]]:
-    """Every parameter a class covers, mapped entries expanded with the live keys."""
+    """Every parameter a class covers, mapped entries expanded with the live keys (an open
+    group's: the names declared under it), a group inside an entry once per entry."""
     for param in described["parameters"]:
         yield param["name"], param
-    for group in described["maps"]:
-        keys: Iterable[str] = values.get(group["for_each"]) or ()
-        if group["for_each"].endswith(OVERRIDE_KEYS):  # an open group: the names declared
-            keys = keys_under(group["path"], values)
-        for key in keys:
-            for field in group["fields"]:  # a field named "" is the entry itself (per item)
-                yield ".".join(p for p in (group["path"], key, field["name"]) if p), field
+    for place in map_places(described["maps"], values):
+        yield from place.entries()
 
 
 def check_class(

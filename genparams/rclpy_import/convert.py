@@ -7,8 +7,9 @@ warning at its FILE:LINE:COL.
 
 A declaration by type only is ``optional``; ``dynamic_typing`` (or a name alone)
 is ``type: any``; one in a loop over a string_array parameter's value, named by the
-item, is a ``for_each`` leaf; one under ``if <parameter> == <literal>`` (or ``in``)
-has a ``when``.
+item, is a ``for_each`` leaf, and one named by the item and more
+(``f"gains.{joint}.p"``) a parameter of a mapped group keyed by that list; one under
+``if <parameter> == <literal>`` (or ``in``) has a ``when``.
 """
 
 from __future__ import annotations
@@ -22,13 +23,49 @@ from typing import Any
 from genparams.rclpy_import.features import awaiting_feature
 from genparams.rclpy_import.scan import Found, Unit, descriptor_of
 from genparams.rclpy_import.values import DescriptorValue, RangeValue, TypeMarker
-from genparams.runtime.core.naming import NODE_PARAMETERS, SCHEMA_NAME, is_ros_name
+from genparams.runtime.core.naming import ENTRY_KEY, NODE_PARAMETERS, SCHEMA_NAME, is_ros_name
 from genparams.runtime.core.types import INT64_MAX, INT64_MIN
 from genparams.schema.errors import Location, SchemaProblem
 
 EXACT = "exact"
 APPROXIMATE = "approximate"
 LEFT_OUT = "left out"
+FOR_EACH = "for_each"
+
+
+@dataclass(frozen=True)
+class ItemPlace:
+    """Where the item sits in a name built from a loop's item: the text before it and
+    after it (``f"gains.{joint}.p"``: ``gains`` and ``p``; ``joint`` alone: both empty)."""
+
+    head: str
+    tail: str
+
+    @property
+    def group(self) -> str:
+        """The schema key holding the items: ``gains``, or ``*`` at the top level."""
+        return self.head or ENTRY_KEY
+
+    @property
+    def key(self) -> str:
+        """The schema key of the declaration: its per-item leaf (no tail), or its place in
+        the mapped group with ``*`` for the entry."""
+        if not self.tail:
+            return self.group
+        return f"{self.head}.{ENTRY_KEY}.{self.tail}" if self.head else f"{ENTRY_KEY}.{self.tail}"
+
+    @property
+    def what(self) -> str:
+        return "a parameter of a mapped group" if self.tail else "a per-item parameter"
+
+    def names(self) -> str:
+        """What the items name, for the note on the key list."""
+        if self.tail:
+            where = "the top level" if not self.head else repr(self.head)
+            return f"entries of {where} (a mapped group)"
+        if not self.head:
+            return "parameters of the top level"
+        return f"the parameters of {self.head!r}"
 
 
 @dataclass
@@ -39,7 +76,8 @@ class Imported:
     notes: list[SchemaProblem] = field(default_factory=list)
     outcome: list[tuple[Found, str]] = field(default_factory=list)  # each declaration's fate
     # the schema key of each imported declaration, by id(found): a per-item one's is its
-    # for_each leaf (``offsets``, or ``*`` at the top level)
+    # for_each leaf (``offsets``, or ``*`` at the top level), a mapped group's parameter's
+    # its place with ``*`` for the entry (``gains.*.p``, ``*.p`` at the top level)
     keys: dict[int, str] = field(default_factory=dict)
 
     def count(self, outcome: str) -> int:
@@ -72,6 +110,7 @@ class _Converter:
         self.imported = Imported(name, {})
         self.tree: dict[str, Any] = {}
         self.first: dict[str, Found] = {}
+        self.groups: dict[str, str] = {}  # each mapped group's schema key: its key list
 
     def run(self) -> Imported:
         for option in self.unit.options:
@@ -135,16 +174,18 @@ class _Converter:
 
     def declaration(self, found: Found) -> str:
         at = found.at
-        per_item = found.name.problem is not None and found.runtime_loop is not None
+        place: ItemPlace | None = None
+        name: Any
         if found.name.problem is not None:
             if found.runtime_loop is None:
                 what = found.name.problem.what
                 self.warn(at, "", f"a name computed at run time ({what}): parameter left out")
                 return LEFT_OUT
-            name, reason = self.per_item(found)
-            if name is None:
+            place, reason = self.per_item(found)
+            if place is None:
                 self.warn(at, "", f"{reason}: parameter left out")
                 return LEFT_OUT
+            name = place.key
         else:
             name = found.name.value
         if not isinstance(name, str):
@@ -164,7 +205,11 @@ class _Converter:
             self.warn(at, name, f"value computed at run time ({found.value.problem.what}): "
                       "parameter left out")  # fmt: skip
             return LEFT_OUT
-        problem = self.name_problem(name)
+        if place is not None and place.tail:
+            assert found.loop_parameter is not None
+            problem = self.entry_problem(place, found.loop_parameter)
+        else:
+            problem = self.name_problem(name)
         if problem is not None:
             self.warn(at, name, f"{problem}: parameter left out")
             return LEFT_OUT
@@ -172,10 +217,10 @@ class _Converter:
         if leaf is None:
             self.warn(at, name, f"{problem}: parameter left out")
             return LEFT_OUT
-        if per_item and leaf.get("optional"):
-            self.warn(at, name.strip("*"), f"one parameter per item of {found.runtime_loop}, "
-                      "with no value: "
-                      "a per-item parameter needs one: parameter left out")  # fmt: skip
+        if place is not None and leaf.get("optional"):
+            shown = place.key if place.tail else place.head
+            self.warn(at, shown, f"one parameter per item of {found.runtime_loop}, with no value: "
+                      f"{place.what} needs one: parameter left out")  # fmt: skip
             return LEFT_OUT
         schema_type = leaf["type"]
         if schema_type == "byte_array":
@@ -187,37 +232,47 @@ class _Converter:
             self.warn(at, name, "ignore_override: genparams always applies overrides: imported "
                       "without it")  # fmt: skip
             exact = False
-        if per_item:
+        if place is not None:
             key = found.loop_parameter
             assert key is not None
-            leaf["for_each"] = key
+            if not place.tail:
+                leaf[FOR_EACH] = key
             self.note(
                 self.first[key].at,
                 key,
-                f"its items name {_per_item_place(name)}: genparams checks that each can "
+                f"its items name {place.names()}: genparams checks that each can "
                 "name one, and says so in its additional_constraints",
             )
         if when is not None:
             leaf["when"] = when
-        self.place(name, leaf)
+        if place is not None and place.tail:
+            assert found.loop_parameter is not None
+            self.place_entry(place, found.loop_parameter, leaf)
+        else:
+            self.place(name, leaf)
         self.first[name] = found
         self.imported.keys[id(found)] = name
         return EXACT if exact else APPROXIMATE
 
-    def per_item(self, found: Found) -> tuple[str | None, str]:
+    def per_item(self, found: Found) -> tuple[ItemPlace | None, str]:
         """A declaration in a loop over a string_array parameter's value, named by the
-        item (``joint``, ``f"offsets.{joint}"``): the schema key of its ``for_each`` leaf
-        (``*`` at the top level, ``offsets``), or why it cannot be one."""
+        item (``joint``, ``f"offsets.{joint}"``) or by the item and more
+        (``f"gains.{joint}.p"``, also as ``declare_parameters(f"gains.{joint}", ...)``):
+        where the item sits in its name, or why it cannot be imported."""
         loop = found.runtime_loop
         assert found.name.problem is not None and loop is not None
         computed = f"one parameter per item of {loop}, its name computed from the item"
         if found.name_is_item:
             computed = f"one parameter per item of {loop}, named by the item"
-        prefix = _item_prefix(found)
-        if prefix is None:
-            if found.loop_variable is None or not _uses(found.name_node, found.loop_variable):
+        place = item_place(found)
+        if place is None:
+            variable = found.loop_variable
+            if variable is None or not any(_uses(n, variable) for n in _name_nodes(found)):
                 return None, f"a name computed at run time ({found.name.problem.what})"
-            return None, f"{computed}: only a name that ends with the item translates"
+            return None, (
+                f"{computed}: only a name holding the item as one whole part between dots "
+                "translates"
+            )
         key = found.loop_parameter
         target = self.first.get(key) if key is not None else None
         leaf = self.leaf(key) if key is not None and target is not None else None
@@ -226,16 +281,17 @@ class _Converter:
             or leaf.get("type") != "string_array"
             or "default" not in leaf
             or "when" in leaf
+            or FOR_EACH in leaf
         ):
             return None, (
                 f"{computed}: the loop must run over a string_array parameter declared "
                 "before it, with a value and no condition"
             )
         if found.condition is not None:
-            return None, f"{computed}, under a condition: a per-item parameter has no when"
-        if found.in_list:
+            return None, f"{computed}, under a condition: {place.what} has no when"
+        if found.in_list and not place.tail:
             return None, f"{computed}, in a declare_parameters list"
-        return prefix or "*", ""
+        return place, ""
 
     def when(self, found: Found) -> tuple[dict[str, Any] | None, str]:
         """The ``when:`` of a declaration under ``if``, or why it cannot have one."""
@@ -276,6 +332,13 @@ class _Converter:
         parts = name.split(".")
         if len(parts) > 1 and parts[-1] == "type":
             return "a namespace cannot hold a parameter named 'type'"
+        for index in range(1, len(parts) + 1):
+            space = ".".join(parts[:index])
+            if space in self.groups:
+                return (
+                    f"{_where(space)} holds one entry per item of {self.groups[space]!r}: "
+                    "a parameter of its own cannot sit in it"
+                )
         for index in range(1, len(parts)):
             if ".".join(parts[:index]) in self.first:
                 return f"{'.'.join(parts[:index])!r} is a parameter, not a namespace"
@@ -283,16 +346,70 @@ class _Converter:
             return f"{name!r} is already a namespace"
         return None
 
+    def entry_problem(self, place: ItemPlace, key_list: str) -> str | None:
+        """Why a parameter of a mapped group cannot be placed, or None."""
+        name = place.key
+        if name in self.first:
+            where = self.location(self.first[name].at)
+            return f"declared again (first at {where.line}:{where.column}; rclpy refuses it)"
+        inner = place.tail.split(".")
+        if inner[-1] == "type":
+            return "a namespace cannot hold a parameter named 'type'"
+        group = place.group
+        owner = self.groups.get(group)
+        if owner is not None and owner != key_list:
+            return f"{_where(group)} already holds one entry per item of {owner!r}"
+        if owner is None:
+            outer = place.head.split(".") if place.head else []
+            for index in range(1, len(outer)):
+                space = ".".join(outer[:index])
+                if space in self.first:
+                    return f"{space!r} is a parameter, not a namespace"
+                if space in self.groups:
+                    return (
+                        f"{space!r} holds one entry per item of {self.groups[space]!r}: a "
+                        "mapped group inside it is not written by the import"
+                    )
+            if group in self.first:
+                what = "per-item parameters" if group == ENTRY_KEY else "a parameter"
+                return f"{_where(group)} is {what}, not a mapped group"
+            if place.head and any(other.startswith(group + ".") for other in self.first):
+                return (
+                    f"{_where(group)} already holds parameters of its own: a mapped group "
+                    "holds only its entries"
+                )
+        base = name[: -len(place.tail)]
+        for index in range(1, len(inner)):
+            if base + ".".join(inner[:index]) in self.first:
+                return f"{'.'.join(inner[:index])!r} is a parameter, not a namespace"
+        if any(other.startswith(name + ".") for other in self.first):
+            return f"{place.tail!r} is already a namespace"
+        return None
+
     def unplace(self, name: str) -> None:
-        """Take a parameter out of the tree, and the namespaces it leaves empty."""
-        parts = name.split(".")
+        """Take a parameter out of the tree, and the namespaces and mapped groups it
+        leaves empty."""
+        parts = _tree_path(name)
         chain = [self.tree]
         for part in parts[:-1]:
             chain.append(chain[-1][part])
         del chain[-1][parts[-1]]
         for depth in range(len(parts) - 1, 0, -1):
-            if not chain[depth]:
+            if set(chain[depth]) <= {FOR_EACH}:
                 del chain[depth - 1][parts[depth - 1]]
+                self.groups.pop(".".join(parts[:depth]), None)
+
+    def place_entry(self, place: ItemPlace, key_list: str, leaf: dict[str, Any]) -> None:
+        """Put a parameter of a mapped group in the tree, making the group if needed."""
+        node = self.tree
+        for part in place.head.split(".") if place.head else [ENTRY_KEY]:
+            node = node.setdefault(part, {})
+        node.setdefault(FOR_EACH, key_list)
+        self.groups[place.group] = key_list
+        *spaces, last = place.tail.split(".")
+        for part in spaces:
+            node = node.setdefault(part, {})
+        node[last] = leaf
 
     def place(self, name: str, leaf: dict[str, Any]) -> None:
         *spaces, last = name.split(".")
@@ -429,25 +546,58 @@ def _typed_leaf(found: Found) -> tuple[dict[str, Any] | None, str]:
     return {"type": schema_type, "default": _default(value)}, ""
 
 
-def _per_item_place(name: str) -> str:
-    return "parameters of the top level" if name == "*" else f"the parameters of {name!r}"
+def _where(group: str) -> str:
+    return "the top level" if group == ENTRY_KEY else repr(group)
 
 
-def _item_prefix(found: Found) -> str | None:
-    """``joint`` -> "", ``f"offsets.{joint}"`` or ``"offsets." + joint`` -> "offsets": the
-    name of a per-item parameter before its item; None for any other name."""
+def _tree_path(key: str) -> list[str]:
+    """A schema key's place in the tree: ``gains.*.p`` -> gains, p (the entry is the
+    group's content); ``*.p`` (a mapped group at the top level) -> ``*``, p."""
+    parts = key.split(".")
+    return parts[:1] + [p for p in parts[1:] if p != ENTRY_KEY]
+
+
+def _name_nodes(found: Found) -> list[ast.AST]:
+    """The expressions a declaration's name is made of: the name, and the namespace of a
+    declare_parameters list."""
+    nodes = [found.name_node] if found.name_node is not None else []
+    if found.in_list and found.namespace_node is not None:
+        nodes.insert(0, found.namespace_node)
+    return nodes
+
+
+def item_place(found: Found) -> ItemPlace | None:
+    """``joint`` -> ("", ""), ``f"offsets.{joint}"`` or ``"offsets." + joint`` ->
+    ("offsets", ""), ``f"gains.{joint}.p"`` or ``declare_parameters(f"gains.{joint}",
+    [("p", ...)])`` -> ("gains", "p"): where the loop's item sits in the name, when it is
+    one whole part between dots and the name holds nothing else computed; else None."""
     variable = found.loop_variable
     if variable is None or found.loop_parameter is None:
         return None
     parts = _name_parts(found.name_node)
-    if not parts or parts[-1] is not None or any(p is None for p in parts[:-1]):
+    if parts is None:
         return None
-    head = "".join(p for p in parts[:-1] if p is not None)
-    if head == "":
-        return "" if _uses(found.name_node, variable) else None
-    if not head.endswith(".") or not is_ros_name(head[:-1]):
+    if found.in_list and found.namespace_node is not None:
+        space = _name_parts(found.namespace_node)
+        if space is None:
+            return None
+        if None in space:
+            parts = [*space, ".", *parts]
+        elif "".join(p for p in space if p is not None):  # rclpy joins a namespace with "."
+            parts = ["".join(p for p in space if p is not None), ".", *parts]
+    if parts.count(None) != 1:
         return None
-    return head[:-1] if _uses(found.name_node, variable) else None
+    names = [n.id for node in _name_nodes(found) for n in ast.walk(node) if isinstance(n, ast.Name)]
+    if names != [variable]:
+        return None
+    index = parts.index(None)
+    head = "".join(p for p in parts[:index] if p is not None)
+    tail = "".join(p for p in parts[index + 1 :] if p is not None)
+    if head and not (head.endswith(".") and is_ros_name(head[:-1])):
+        return None
+    if tail and not (tail.startswith(".") and is_ros_name(tail[1:])):
+        return None
+    return ItemPlace(head[:-1], tail[1:])
 
 
 def _name_parts(node: ast.AST | None) -> list[str | None] | None:

@@ -24,7 +24,7 @@ from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
-from genparams.rclpy_import.convert import LEFT_OUT
+from genparams.rclpy_import.convert import LEFT_OUT, item_place
 from genparams.rclpy_import.node_file import ImportedNode
 from genparams.rclpy_import.scan import DECLARE_ONE, Found
 from genparams.rclpy_import.values import Evaluator, Scope, UntranslatableError
@@ -204,8 +204,7 @@ class _Patcher:
             return True
         calls = {id(f.call): f.call for f in founds}
         for call in calls.values():
-            names = [f.name.value for f in founds if f.call is call]
-            self.replace_use(call, names)
+            self.replace_use(call, [f for f in founds if f.call is call])
         return False
 
     def remove(self, statement: ast.stmt) -> None:
@@ -219,19 +218,31 @@ class _Patcher:
         self.removals[id(statement)] = edit
         self.removed.append(statement)
 
-    def replace_use(self, call: ast.Call, names: list[str]) -> None:
+    def replace_use(self, call: ast.Call, founds: list[Found]) -> None:
         assert isinstance(call.func, ast.Attribute)
         if call.func.attr == DECLARE_ONE:
-            read = self.typed_read_span(call, names[0])
-            if read is not None:
+            name = founds[0].name.value
+            if isinstance(name, str) and self.typed_read_span(call, name) is not None:
                 return
             start, end = self.source.span(call)
-            quoted = self.quoted(call, names[0])
+            quoted = self.name_text(call, founds[0])
             self.edits.append(_Edit(start, end, f"self.get_parameter({quoted})"))
             return
         start, end = self.source.span(call)
-        listed = ", ".join(self.quoted(call, name) for name in names)
+        listed = ", ".join(self.name_text(call, found) for found in founds)
         self.edits.append(_Edit(start, end, f"self.get_parameters([{listed}])"))
+
+    def name_text(self, call: ast.Call, found: Found) -> str:
+        """The declared name as source: a string literal, or for a name built from a
+        loop's item an f-string of the same name (``f"wheels.{wheel}.radius"``)."""
+        if found.name.problem is None:
+            return self.quoted(call, found.name.value)
+        place = item_place(found)
+        assert place is not None and found.loop_variable is not None
+        parts = [place.head, "{" + found.loop_variable + "}", place.tail]
+        if parts == ["", parts[1], ""]:
+            return found.loop_variable
+        return "f" + self.quoted(call, ".".join(p for p in parts if p))
 
     def quoted(self, call: ast.Call, text: str) -> str:
         """``text`` as a string literal in the quotes the call's source uses."""

@@ -63,6 +63,7 @@ class Found:
     literal_loop: ast.For | None = None  # the outermost loop over literal items expanding it
     in_list: bool = False  # an item of a declare_parameters list
     name_node: ast.AST | None = None  # the name argument, as written
+    namespace_node: ast.AST | None = None  # a declare_parameters namespace, as written
     # The loop read at run time, when it is the only one and runs over one parameter's
     # value (``for joint in self.get_parameter('joints').value``): that parameter, and
     # the loop variable.
@@ -359,6 +360,7 @@ class _Scanner:
             pieces[0] = _joined(namespace, pieces[0])
             found = self.add(call, at, statement, pieces, ignore, context, name_node)
             found.in_list = True
+            found.namespace_node = args.get("namespace")
 
     def add(
         self,

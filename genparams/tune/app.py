@@ -27,6 +27,7 @@ from genparams.tune.events import EventStreams
 from genparams.tune.graph import Graph
 from genparams.tune.json_response import JSONResponse
 from genparams.tune.params_dump import params_file_text
+from genparams.tune.places import entry_places
 from genparams.tune.security import Gate, Policy
 
 STATIC = Path(__file__).resolve().parent / "static"
@@ -109,7 +110,13 @@ class TuneApp:
             return JSONResponse({"error": str(exc)}, status_code=504)
         schema, problem = self.graph.schema_state(name)
         return JSONResponse(
-            {"node": name, "schema": schema, "schema_problem": problem, "parameters": parameters}
+            {
+                "node": name,
+                "schema": schema,
+                "schema_problem": problem,
+                "parameters": parameters,
+                "places": entry_places(schema, parameters),
+            }
         )
 
     async def set(self, request: Request) -> Response:

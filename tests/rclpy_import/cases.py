@@ -24,6 +24,7 @@ class Case:
 
 
 CASES = [
+    Case("arm_controller", "arm_controller.py", None, 0),
     Case("camera_driver", "camera_driver.py", None, 0),
     Case("key_teleop", "key_teleop.py", None, 0),
     Case("legacy_bridge", "legacy_bridge.py", None, 1),
@@ -32,6 +33,7 @@ CASES = [
     Case("two_nodes_service", "two_nodes.py", "ServiceNode", 0),
 ]
 CLASSES = {
+    "arm_controller": "ArmControllerNode",
     "camera_driver": "CameraDriverNode",
     "key_teleop": "KeyTeleop",
     "legacy_bridge": "LegacyBridge",

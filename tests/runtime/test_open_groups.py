@@ -193,8 +193,7 @@ def test_audit_checks_each_entry(module: types.ModuleType, tmp_path: Path) -> No
     finally:
         graph.close()
     assert target in result.audited
-    # (Maps inside maps, as controllers.<key>.gains, are not expanded by audit.)
-    sensors = [f for f in result.findings if f.parameter.startswith("sensors")]
-    assert [f.text() for f in sensors if f.kind == VIOLATION] == []
-    drifted = {f.parameter for f in result.findings if f.parameter.startswith("sensors")}
-    assert drifted == {"sensors.front.rate"}  # audited against the entry's default, 30.0
+    assert [f.text() for f in result.findings if f.kind == VIOLATION] == []
+    drifted = {f.parameter for f in result.findings}
+    # each audited against its entry's default (30.0, and 1.0 in the map inside the group)
+    assert drifted == {"sensors.front.rate", "controllers.arm.gains.left.p"}

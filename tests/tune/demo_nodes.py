@@ -1,7 +1,7 @@
 """Real nodes for the tuning and audit tests, in a process of their own.
 
 ``python -m tests.tune.demo_nodes NAME:KIND ...`` starts one node per argument
-(KIND: camera, arm, motion, nonfinite, plain, loose, hostile, edges, checks, or wideN with
+(KIND: camera, arm, motion, nonfinite, open, plain, loose, hostile, edges, checks, or wideN with
 N parameters) and prints "ready" once every node is declared. ROS arguments for every node
 follow ``--``.
 """
@@ -28,6 +28,7 @@ SCHEMAS = {
     "arm": ROOT / "examples/arm/arm.yaml",
     "motion": ROOT / "examples/motion/motion.yaml",
     "nonfinite": ROOT / "tests/tune/nonfinite.yaml",
+    "open": ROOT / "tests/cases/open_groups/schema.yaml",  # its keys come from a params file
 }
 
 

@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import itertools
-from collections.abc import Callable, Iterable, Mapping, Sequence
-from dataclasses import replace
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from dataclasses import dataclass, replace
 from typing import Any
 
 from genparams.runtime.core.naming import ENTRY_KEY, ENTRY_KEY_RULE, OVERRIDE_KEYS, is_entry_key
@@ -173,3 +173,73 @@ def resolve_all(
         values.update(entry_values)
         problems.extend(entry_problems)
     return parameters, values, problems
+
+
+PLACES_BEYOND = 1000  # see map_places
+
+
+@dataclass(frozen=True)
+class MapPlace:
+    """One mapped group of a schema message where it stands on a node: ``path`` is the
+    group's place (``controllers.front.gains`` for the group ``controllers.*.gains``),
+    ``keys`` its entries' keys there."""
+
+    group: Mapping[str, Any]  # the message's map: path, for_each, fields (full names)
+    path: str
+    keys: tuple[str, ...]
+
+    @property
+    def is_open(self) -> bool:
+        """Keyed by the overrides (``for_each: overrides``), not by a key list."""
+        return str(self.group["for_each"]).endswith(OVERRIDE_KEYS)
+
+    @property
+    def fields(self) -> list[Mapping[str, Any]]:
+        """The fields of each entry (one named "" is the entry itself); those of a group
+        inside the entry (``tips.*.force``) are left to that group's own places."""
+        return [f for f in self.group["fields"] if ENTRY_KEY not in str(f["name"]).split(".")]
+
+    def entries(self) -> Iterator[tuple[str, Mapping[str, Any]]]:
+        """Each parameter of its entries, by full name, with its field."""
+        for key in self.keys:
+            for field in self.fields:
+                yield ".".join(p for p in (self.path, key, field["name"]) if p), field
+
+
+def map_places(maps: Iterable[Mapping[str, Any]], values: Mapping[str, Any]) -> list[MapPlace]:
+    """Every place of the mapped groups of a schema message (``maps``, with full names) on a
+    node whose parameters are ``values`` (by full name): a group inside an entry of another
+    stands once per key of the outer one. The keys are the key list's value, or for an
+    open group the names declared under it.
+
+    A node holds a parameter in every place its own schema has (a little more for entries
+    it failed to declare): places past one per parameter, plus PLACES_BEYOND, are not
+    listed, so a schema message nesting groups deep over long lists cannot make the
+    reader expand a product of them."""
+    groups = {str(m["path"]): m for m in maps}
+    budget = len(values) + PLACES_BEYOND
+
+    def keys_at(group: Mapping[str, Any], path: str) -> tuple[str, ...]:
+        if str(group["for_each"]).endswith(OVERRIDE_KEYS):
+            return tuple(keys_under(path, values))
+        listed = values.get(str(group["for_each"]))
+        if not isinstance(listed, (list, tuple)):
+            return ()
+        return tuple(k for k in listed if isinstance(k, str))
+
+    def places(path: str) -> list[str]:
+        outer = map_chain(path)
+        if not outer or outer[-1] not in groups:
+            return [path]
+        head = f"{outer[-1]}.{ENTRY_KEY}." if outer[-1] else f"{ENTRY_KEY}."
+        rest = path[len(head) :]
+        found: list[str] = []
+        for place in places(outer[-1]):
+            for key in keys_at(groups[outer[-1]], place):
+                if len(found) >= budget:
+                    return found
+                found.append(".".join(p for p in (place, key, rest) if p))
+        return found
+
+    listed = [MapPlace(g, p, keys_at(g, p)) for path, g in groups.items() for p in places(path)]
+    return listed[:budget]

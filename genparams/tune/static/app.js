@@ -12,19 +12,29 @@ const CHECK_DELAY_MS = 150;
 function status(text) { document.getElementById("status").textContent = text; }
 const liveMode = () => document.getElementById("live").checked;
 
+// An entry's parameter: the place's path, the key, the field ("" for a per-item entry).
+const entryName = (place, key, field) => [place.path, key, field].filter(Boolean).join(".");
+
 // What the page knows of each parameter: the schema's words, else the node's descriptor.
-function metas(schema, parameters) {
+// Mapped entries come from the places the server found (places.py): where each group
+// stands on the node, with its keys.
+function metas(schema, parameters, places) {
   const byName = new Map();
-  const maps = [];
+  const groups = new Map();
   for (const described of schema?.classes || []) {
     for (const p of described.parameters) byName.set(p.name, { ...p, schema: true });
-    maps.push(...described.maps);
+    for (const group of described.maps) groups.set(group.path, group);
   }
   const values = new Map(parameters.map((p) => [p.name, p.value]));
-  for (const group of maps) {
-    for (const key of values.get(group.for_each) || []) {
-      for (const field of group.fields)
-        byName.set([group.path, key, field.name].filter(Boolean).join("."), { ...field, schema: true, mapped: group.path, key });
+  const shown = [];
+  for (const place of places || []) {
+    const group = groups.get(place.map);
+    if (!group) continue;
+    shown.push({ ...place, group });
+    const fields = new Map(group.fields.map((f) => [f.name, f]));
+    for (const key of place.keys) {
+      for (const field of place.fields)
+        byName.set(entryName(place, key, field), { ...fields.get(field), schema: true, mapped: place.path, key });
     }
   }
   for (const p of parameters) {
@@ -35,7 +45,7 @@ function metas(schema, parameters) {
     byName.set(p.name, { name: p.name, type: p.type, read_only: p.read_only, range: p.range,
       description: p.description, constraints: p.constraints ? [p.constraints] : [], schema: false });
   }
-  return { byName, maps, values };
+  return { byName, places: shown, values };
 }
 
 function namespaceOf(name) {
@@ -202,7 +212,7 @@ function setKeys(group, keys) {
 
 function renderNode(data) {
   page.pending.clear();
-  const known = metas(data.schema, data.parameters);
+  const known = metas(data.schema, data.parameters, data.places);
   page.drafts.clear();
   const handlers = { readOnly: page.readOnly, onEdit, onDraft, onReset };
   const rowFor = (name) => {
@@ -221,10 +231,9 @@ function renderNode(data) {
   const order = [...sections.keys()].sort((a, b) => (a.startsWith("other") - b.startsWith("other")) || a.localeCompare(b));
   // Builders, each with its row count: the first screenful is built at once, the rest in chunks.
   const builders = order.map((t) => [sections.get(t).length, () => section(t, sections.get(t).map(rowFor))]);
-  for (const group of known.maps) {
-    const keys = known.values.get(group.for_each) || [];
-    builders.push([keys.length * group.fields.length, () => mapGroup(group, keys,
-      (key) => group.fields.map((f) => rowFor([group.path, key, f.name].filter(Boolean).join("."))),
+  for (const place of known.places) {
+    builders.push([place.keys.length * place.fields.length, () => mapGroup(place,
+      (key) => place.fields.map((f) => rowFor(entryName(place, key, f))),
       { readOnly: page.readOnly,
         onAddKey: (g, key) => setKeys(g, [...(known.values.get(g.for_each) || []), key]),
         onRemoveKey: (g, key) => setKeys(g, (known.values.get(g.for_each) || []).filter((k) => k !== key)) })]);

@@ -166,21 +166,34 @@ export function section(title, rows) {
     el("legend", { text: title || "(top level)" }), ...rows);
 }
 
-export function mapGroup(group, keys, keyRows, { readOnly, onAddKey, onRemoveKey }) {
-  const entries = keys.map((key) => {
-    const remove = el("button", { type: "button", class: "small", text: "remove key",
-      "data-map-remove": `${group.path}.${key}`, disabled: readOnly });
-    remove.addEventListener("click", () => onRemoveKey(group, key));
-    return el("fieldset", { class: "entry", "data-entry": `${group.path}.${key}` },
-      el("legend", {}, `${group.path}.${key} `, remove), ...keyRows(key));
+// One place of a mapped group (places.py): its entries, and for a group keyed by a list the
+// buttons that set the list. An open group's keys are the names the node declared under it
+// at startup: none can be added or removed.
+export function mapGroup(place, keyRows, { readOnly, onAddKey, onRemoveKey }) {
+  const { group, path } = place;
+  const entries = place.keys.map((key) => {
+    const where = path ? `${path}.${key}` : key;
+    const remove = place.open ? null : el("button", { type: "button", class: "small", text: "remove key",
+      "data-map-remove": where, disabled: readOnly });
+    remove?.addEventListener("click", () => onRemoveKey(group, key));
+    return el("fieldset", { class: "entry", "data-entry": where },
+      el("legend", {}, `${where} `, remove), ...keyRows(key));
   });
-  const input = el("input", { type: "text", placeholder: "new key", "data-map-add": group.path, disabled: readOnly });
+  const title = place.open
+    ? `${path} (one entry per key given under ${path} in the overrides)`
+    : `${path || "(top level)"} (one entry per item of ${group.for_each})`;
+  const box = el("fieldset", { class: "section map", "data-map": path, "data-open": place.open },
+    el("legend", { text: title }), ...entries);
+  if (place.open) {
+    if (!place.keys.length) box.append(el("p", { class: "hint", text: "No key was given in the overrides." }));
+    return box;
+  }
+  const input = el("input", { type: "text", placeholder: "new key", "data-map-add": path, disabled: readOnly });
   const add = el("button", { type: "button", class: "small", text: "add key",
-    "data-map-add-button": group.path, disabled: readOnly });
+    "data-map-add-button": path, disabled: readOnly });
   add.addEventListener("click", () => { if (input.value) onAddKey(group, input.value); });
-  return el("fieldset", { class: "section map", "data-map": group.path },
-    el("legend", { text: `${group.path} (one entry per item of ${group.for_each})` }),
-    ...entries, el("div", { class: "add-key" }, input, add));
+  box.append(el("div", { class: "add-key" }, input, add));
+  return box;
 }
 
 export function diffTable(rows) {
