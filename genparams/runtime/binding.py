@@ -30,6 +30,7 @@ from genparams.runtime.mapped import EntryPlan, MappedEntries
 from genparams.runtime.naming import is_ros_token, join_prefix, strip_prefix
 from genparams.runtime.overrides import OverrideReader
 from genparams.runtime.params import Params
+from genparams.runtime.problems import ParameterProblem
 from genparams.runtime.rewrites import add_rewrite, typed_empty_arrays
 from genparams.runtime.rule_check import broken_rules
 from genparams.runtime.spec import CompiledParam, compile_schema
@@ -99,8 +100,11 @@ class Binding(Generic[P]):
                 spec.name,
                 node.get_fully_qualified_name(),
                 [
-                    f"{params_cls.__name__} is already declared at {where}: declare a class once "
-                    "per prefix and share the view it returns"
+                    ParameterProblem(
+                        "",
+                        f"{params_cls.__name__} is already declared at {where}: declare a class "
+                        "once per prefix and share the view it returns",
+                    )
                 ],
             )
 
@@ -112,13 +116,15 @@ class Binding(Generic[P]):
             compiled, reader.read, full, given_names=[n for n in given_names if n is not None]
         )
         clashes = [
-            f"{full(name)}: already declared on this node by {owner.schema_name}"
+            ParameterProblem(full(name), f"already declared on this node by {owner.schema_name}")
             for name in parameters
             if (owner := sets.owner_of(full(name))) is not None
         ]
+        # The reader's "declared by other code" of a name a clash already explains goes.
+        clashing = {clash.key for clash in clashes}
         problems = [
             *clashes,
-            *(p for p in reader.with_problems(problems) if not _names_clash(p, clashes)),
+            *(p for p in reader.with_problems(problems) if p.key not in clashing),
         ]
         if problems:
             raise ParameterDeclarationError(spec.name, node.get_fully_qualified_name(), problems)
@@ -164,8 +170,8 @@ class Binding(Generic[P]):
 
     def check(
         self, parameters: Sequence[Parameter], declaring: bool
-    ) -> dict[CompiledParam, Any] | list[str]:
-        """This class's part of a request, typed, or the reasons it is refused."""
+    ) -> dict[CompiledParam, Any] | list[ParameterProblem]:
+        """This class's part of a request, typed, or the problems it is refused for."""
         typed, reasons = check_each(self.owned, parameters)
         if self.mapped is not None and not reasons:
             reasons.extend(self.mapped.check(parameters, typed, declaring))
@@ -306,9 +312,9 @@ class Binding(Generic[P]):
 
 def check_each(
     owned: Mapping[str, CompiledParam], parameters: Sequence[Parameter]
-) -> tuple[dict[CompiledParam, Any], list[str]]:
+) -> tuple[dict[CompiledParam, Any], list[ParameterProblem]]:
     """The values of ``owned`` parameters (by full ROS name) in a request, typed, and a
-    reason per value refused: its type, then its own rules. Other names are skipped."""
+    problem per value refused: its type, then its own rules. Other names are skipped."""
     reasons = []
     typed: dict[CompiledParam, Any] = {}
     for parameter in parameters:
@@ -316,20 +322,15 @@ def check_each(
         if param is None:
             continue
         if parameter.type_ is _NOT_SET:
-            reasons.append(f"{parameter.name}: cannot be undeclared")
+            reasons.append(ParameterProblem(parameter.name, "cannot be undeclared"))
             continue
         try:
             value = param.type.from_ros(parameter.value)
         except ValueError as exc:
-            reasons.append(f"{parameter.name}: {exc}")
+            reasons.append(ParameterProblem(parameter.name, str(exc)))
             continue
         reason = param.check(value)
         if reason is not None:
-            reasons.append(f"{parameter.name}: {reason}")
+            reasons.append(ParameterProblem(parameter.name, reason))
         typed[param] = value
     return typed, reasons
-
-
-def _names_clash(problem: str, clashes: list[str]) -> bool:
-    """The reader's "declared by other code" for a name a clash already explains."""
-    return any(problem.split(":", 1)[0] == clash.split(":", 1)[0] for clash in clashes)

@@ -45,6 +45,7 @@ from rclpy.parameter import Parameter
 
 from genparams.runtime import rclpy_internals as internals
 from genparams.runtime.errors import GenparamsError
+from genparams.runtime.problems import ParameterProblem, render_problems
 
 if TYPE_CHECKING:
     from rclpy.node import Node
@@ -119,7 +120,7 @@ class NodeSets:
     def check(self, parameters: Sequence[Parameter]) -> SetParametersResult:
         """genparams' on-set callback, run after every other one: each class checks its part."""
         declaring, accepted = self.frames[-1]
-        reasons: list[str] = []
+        reasons: list[ParameterProblem] = []
         for binding in self.bindings:
             outcome = binding.check(parameters, declaring)
             if isinstance(outcome, list):
@@ -127,7 +128,7 @@ class NodeSets:
             elif outcome:
                 accepted[binding] = outcome
         if reasons:
-            return SetParametersResult(successful=False, reason="; ".join(reasons))
+            return SetParametersResult(successful=False, reason=render_problems(reasons))
         return _ACCEPTED
 
     def commit_then_post_set(self, parameters: Sequence[Parameter]) -> None:

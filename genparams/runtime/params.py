@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING, Any, ClassVar, Self
 from genparams.runtime.changes import Changes
 from genparams.runtime.entries import flatten, resolve_all
 from genparams.runtime.errors import DetachedSnapshotError, ParameterDeclarationError
+from genparams.runtime.problems import ParameterProblem
 from genparams.runtime.spec import SchemaSpec, compile_schema
 from genparams.runtime.tree import Group, build_tree, to_dict
 
@@ -77,9 +78,9 @@ class Params(Group):
         unknown = sorted(set(given) - set(parameters))
         every = compiled.parameters
         problems.extend(
-            f"{name}: {every[name].spec.condition_text}"
-            if name in every
-            else f"{name}: no such parameter"
+            ParameterProblem(
+                name, every[name].spec.condition_text if name in every else "no such parameter"
+            )
             for name in unknown
         )
         if problems:

@@ -1,0 +1,69 @@
+"""Problems as records, and the one way a problem is written for a user.
+
+A problem is four fields: ``place`` (``FILE:LINE:COL``, a node name, or empty
+where the reader already knows it), ``key`` (the dotted parameter or schema
+key, may be empty), ``rule`` (the rule broken, shown in brackets when given;
+empty when the message names it in its own words) and ``message``.
+``render_problem`` writes every problem genparams reports, whoever found it:
+schema errors, params-file checks, audit findings, a node's refusal of a set
+(the ``SetParametersResult`` reason) and its refusal to start
+(``ParameterDeclarationError``).
+
+This module is the runtime's, so a generated module needs nothing of the
+compiler to report a problem; ``genparams.errors`` exports it to the rest.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass
+from typing import Protocol
+
+from genparams.runtime.visible import visible
+
+
+class Problem(Protocol):
+    """One thing wrong (or worth knowing), where it is and which rule it breaks."""
+
+    @property
+    def place(self) -> str: ...
+
+    @property
+    def key(self) -> str: ...
+
+    @property
+    def rule(self) -> str: ...
+
+    @property
+    def message(self) -> str: ...
+
+
+@dataclass(frozen=True, slots=True)
+class ParameterProblem:
+    """A problem the runtime finds with a parameter's value: at a set, at declare, remotely.
+
+    ``key`` is the full ROS name as the node knows it (with its prefix), empty for
+    a rule between parameters (its message names the rule and every value it read).
+    Made only when something is refused: a set that passes builds none.
+    """
+
+    key: str
+    message: str
+    rule: str = ""
+    place: str = ""
+
+    def __str__(self) -> str:
+        return render_problem(self)
+
+
+def render_problem(problem: Problem) -> str:
+    """``place: key: message [rule]`` on one line, every character shown (see ``visible``)."""
+    text = ": ".join(part for part in (problem.place, problem.key, problem.message) if part)
+    if problem.rule:
+        text += f" [{problem.rule}]"
+    return visible(text)
+
+
+def render_problems(problems: Iterable[Problem]) -> str:
+    """Problems on one line, as a refused set's reason: each rendered, ``; `` between them."""
+    return "; ".join(render_problem(problem) for problem in problems)
