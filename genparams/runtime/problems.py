@@ -40,11 +40,14 @@ class Problem(Protocol):
 
 @dataclass(frozen=True, slots=True)
 class ParameterProblem:
-    """A problem the runtime finds with a parameter's value: at a set, at declare, remotely.
+    """A problem with a parameter: one the runtime finds with a value (at a set, at declare,
+    remotely), or one a command finds with a parameter of a running node.
 
     ``key`` is the full ROS name as the node knows it (with its prefix), empty for
     a rule between parameters (its message names the rule and every value it read).
-    Made only when something is refused: a set that passes builds none.
+    ``place`` is empty in the runtime's problems, whose reader knows the node, and the
+    node's name in a command's. The runtime makes one only when something is refused:
+    a set that passes builds none.
     """
 
     key: str
