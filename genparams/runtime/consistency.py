@@ -45,7 +45,7 @@ from rclpy.parameter import Parameter
 
 from genparams.runtime import rclpy_internals as internals
 from genparams.runtime.errors import GenparamsError
-from genparams.runtime.problems import ParameterProblem, render_problems
+from genparams.runtime.problems import ParameterProblem, render_problem, render_problems
 
 if TYPE_CHECKING:
     from rclpy.node import Node
@@ -66,11 +66,12 @@ class UndeclareRefusedError(ParameterImmutableException, GenparamsError):
     """
 
     def __init__(self, name: str, schema: str) -> None:
-        Exception.__init__(
-            self,
-            f"{name}: cannot be undeclared: {schema} declares it and its typed view would "
+        refusal = ParameterProblem(
+            name,
+            f"cannot be undeclared: {schema} declares it and its typed view would "
             "keep the value (parameter services refuse it the same way)",
         )
+        Exception.__init__(self, render_problem(refusal))
         self.name = name
 
 
