@@ -79,3 +79,27 @@ def test_defaults_name_each_unknown_parameter_as_a_record(arm: types.ModuleType)
     with pytest.raises(ParameterDeclarationError) as caught:
         arm.ArmParams.defaults({"max_sped": 1.0})
     assert caught.value.problems == (ParameterProblem("max_sped", "no such parameter"),)
+
+
+def test_a_set_that_passes_builds_no_record(
+    ros: RosHarness, arm: types.ModuleType, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    built: list[ParameterProblem] = []
+
+    class Counted(ParameterProblem):
+        __slots__ = ()
+
+        def __init__(self, *args: str, **kwargs: str) -> None:
+            super().__init__(*args, **kwargs)
+            built.append(self)
+
+    node = ros.node()
+    cfg = arm.ArmParams.declare(node)
+    for module in ("binding", "rule_check", "lifecycle", "mapped", "consistency"):
+        monkeypatch.setattr(f"genparams.runtime.{module}.ParameterProblem", Counted)
+    for value in (0.5, 2.0, 1.0):
+        (result,) = node.set_parameters([Parameter("gains.elbow.p", value=value)])
+        assert result.successful
+    assert cfg.gains["elbow"].p == 1.0 and built == []
+    (result,) = node.set_parameters([Parameter("gains.elbow.p", value=-1.0)])
+    assert not result.successful and [p.key for p in built] == ["gains.elbow.p"]
