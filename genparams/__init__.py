@@ -13,7 +13,13 @@ __version__ = "0.1.0"
 
 if TYPE_CHECKING:
     from genparams.api import generate, load_schema
-    from genparams.errors import CommandError, GenparamsError, Problem, render_problem
+    from genparams.errors import (
+        CommandError,
+        GenparamsError,
+        ParameterProblem,
+        Problem,
+        render_problem,
+    )
     from genparams.runtime.core.errors import (
         ParameterDeclarationError,
         RemoteParameterError,
@@ -22,7 +28,7 @@ if TYPE_CHECKING:
     from genparams.schema.errors import SchemaError, SchemaProblem
 
 _API = ("generate", "load_schema")
-_ERRORS = ("CommandError", "GenparamsError", "Problem", "render_problem")
+_ERRORS = ("CommandError", "GenparamsError", "ParameterProblem", "Problem", "render_problem")
 _RUNTIME_ERRORS = ("ParameterDeclarationError", "RemoteParameterError", "RemoteSetError")
 _SCHEMA_ERRORS = ("SchemaError", "SchemaProblem")
 
@@ -30,6 +36,7 @@ __all__ = [
     "CommandError",
     "GenparamsError",
     "ParameterDeclarationError",
+    "ParameterProblem",
     "Problem",
     "RemoteParameterError",
     "RemoteSetError",

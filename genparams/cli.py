@@ -23,6 +23,7 @@ from genparams.commands import (
     tune,
     validate,
 )
+from genparams.commands._common import report
 from genparams.errors import CommandError
 
 COMMANDS = (
@@ -56,12 +57,13 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    """Run one command; its exit code. A ``CommandError`` is printed on stderr here, only here."""
+    """Run one command; its exit code. A ``CommandError`` is reported here, only here, by the
+    one writer of stderr (``commands._common.report``)."""
     args = build_parser().parse_args(argv)
     try:
         code: int = args.run(args)
     except CommandError as error:
-        print(error, file=sys.stderr)
+        report(*error.lines)
         return error.exit_code
     return code
 

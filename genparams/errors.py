@@ -6,42 +6,31 @@ name), ``key`` (the dotted parameter or schema key, may be empty), ``rule``
 reaches a user as one line written by ``render_problem``. Commands raise
 ``CommandError``, which carries the exit code; ``genparams.cli.main`` prints it.
 
-The base class lives with the runtime's errors, so generated modules need
-nothing of the compiler; the compiler and the commands import it from here.
+The base class, the problem record and its renderer live with the runtime
+(``genparams.runtime.core.errors``, ``genparams.runtime.core.problems``), so generated
+modules need nothing of the compiler; the compiler and the commands import
+them from here.
 """
 
 from __future__ import annotations
 
-from typing import Protocol
-
 from genparams.runtime.core.errors import GenparamsError
+from genparams.runtime.core.problems import (
+    ParameterProblem,
+    Problem,
+    render_problem,
+    render_problems,
+)
 from genparams.runtime.core.visible import visible
 
-__all__ = ["CommandError", "GenparamsError", "Problem", "render_problem"]
-
-
-class Problem(Protocol):
-    """One thing wrong (or worth knowing), where it is and which rule it breaks."""
-
-    @property
-    def place(self) -> str: ...
-
-    @property
-    def key(self) -> str: ...
-
-    @property
-    def rule(self) -> str: ...
-
-    @property
-    def message(self) -> str: ...
-
-
-def render_problem(problem: Problem) -> str:
-    """``place: key: message [rule]`` on one line, every character shown (see ``visible``)."""
-    text = ": ".join(part for part in (problem.place, problem.key, problem.message) if part)
-    if problem.rule:
-        text += f" [{problem.rule}]"
-    return visible(text)
+__all__ = [
+    "CommandError",
+    "GenparamsError",
+    "ParameterProblem",
+    "Problem",
+    "render_problem",
+    "render_problems",
+]
 
 
 class CommandError(GenparamsError):

@@ -23,7 +23,9 @@ def schema_from(path: Path) -> Schema:
 
 def report(*lines: object) -> None:
     """Lines of a command's report that are not its output (warnings, notes, a summary) on
-    stderr, every character shown; errors are raised as ``CommandError`` instead."""
+    stderr, every character shown: the one place genparams writes to stderr. A problem
+    (``genparams.errors.Problem``) is a line ``render_problem`` wrote. Errors are raised as
+    ``CommandError`` instead, and ``genparams.cli.main`` reports them here."""
     for line in lines:
         print(visible(str(line)), file=sys.stderr)
 

@@ -16,6 +16,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
+from genparams.errors import ParameterProblem
 from genparams.runtime.core.naming import NODE_PARAMETERS, is_ros_token
 from genparams.runtime.core.types import TYPES_BY_ROS_TYPE
 
@@ -43,8 +44,8 @@ class Reported:
 class Imported:
     name: str
     data: dict[str, Any]
-    warnings: list[str] = field(default_factory=list)
-    notes: list[str] = field(default_factory=list)
+    warnings: list[ParameterProblem] = field(default_factory=list)  # node, parameter, why
+    notes: list[ParameterProblem] = field(default_factory=list)
     parameters: int = 0  # parameters the node reported, its own rclpy ones aside
     imported: int = 0  # of them, in the schema
 
@@ -63,12 +64,16 @@ def import_node(node: str, reported: Sequence[Reported], name: str | None = None
     names = {r.name for r in reported}
     for param in sorted(reported, key=lambda r: r.name):
         if param.name in NODE_PARAMETERS:
-            result.notes.append(f"{node}: {param.name}: note: declared by rclpy itself: left out")
+            result.notes.append(
+                ParameterProblem(param.name, "note: declared by rclpy itself: left out", place=node)
+            )
             continue
         result.parameters += 1
         problem = _problem(param, names)
         if problem is not None:
-            result.warnings.append(f"{node}: {param.name}: warning: {problem}: left out")
+            result.warnings.append(
+                ParameterProblem(param.name, f"warning: {problem}: left out", place=node)
+            )
             continue
         leaf = _leaf(param)
         *spaces, last = param.name.split(".")

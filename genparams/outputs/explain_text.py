@@ -8,6 +8,7 @@ from genparams.outputs.yaml_text import key_text, node_key_text, scalar_text
 from genparams.paramsfile.explain import Explanation, Row
 from genparams.paramsfile.ros_yaml import PARAMS_KEY, ros_type_name
 from genparams.runtime.core.visible import visible
+from genparams.schema.errors import SchemaProblem
 
 
 def shown(value: Any) -> str:
@@ -34,8 +35,10 @@ def text_report(explanation: Explanation) -> str:
         lines.append(f"{text}  {cells[3]}".rstrip())
     ignored = [str(p) for p in explanation.report.problems]
     ignored += [
-        visible(
-            f"{s.section.node_location}: {s.section.node}: section for another node: {s.reason}"
+        str(
+            SchemaProblem(
+                s.section.node_location, s.section.node, f"section for another node: {s.reason}"
+            )
         )
         for s in explanation.near_misses
     ]

@@ -34,7 +34,7 @@ from rcl_interfaces.msg import FloatingPointRange, IntegerRange, ParameterDescri
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
-from genparams.errors import GenparamsError
+from genparams.errors import GenparamsError, ParameterProblem, render_problem, render_problems
 from genparams.runtime.core.naming import ENTRY_KEY, join_prefix
 from genparams.runtime.core.rule_check import violations
 from genparams.runtime.core.schema_message import class_spec, why_not_run
@@ -229,14 +229,14 @@ class ProposalCheck:
                 first = first or result.reason
         if first is not None:
             return first, list(verdicts.values())
-        reasons = []
+        reasons: list[ParameterProblem] = []
         for checks in self.classes:
             reasons.extend(self.class_reasons(checks, proposed, verdicts))
-        return "; ".join(reasons) or None, list(verdicts.values())
+        return render_problems(reasons) or None, list(verdicts.values())
 
     def class_reasons(
         self, checks: ClassChecks, proposed: Sequence[Parameter], verdicts: dict[str, Verdict]
-    ) -> list[str]:
+    ) -> list[ParameterProblem]:
         """What the node's genparams check says of this class's part of the proposal."""
         owned = {p.name: param for p in proposed if (param := checks.param(p.name)) is not None}
         if not owned:
@@ -247,7 +247,7 @@ class ProposalCheck:
         if reasons:
             for parameter in proposed:  # each reason names its parameter first
                 alone = check_each(owned, [parameter])[1]
-                verdicts[parameter.name].reasons.extend(alone)
+                verdicts[parameter.name].reasons.extend(map(render_problem, alone))
         # The node evaluates the rules only when every value passed its own checks; they
         # are shown anyway on the values that did, so a rule shows before the last fix.
         passing = {
@@ -260,8 +260,8 @@ class ProposalCheck:
 
     def broken_rules(
         self, checks: ClassChecks, proposed: dict[str, Any], verdicts: dict[str, Verdict]
-    ) -> list[str]:
-        """A reason per rule the proposal (relative names, typed) breaks over the node's values;
+    ) -> list[ParameterProblem]:
+        """A problem per rule the proposal (relative names, typed) breaks over the node's values;
         each goes to every proposed parameter the rule reads."""
         rules = checks.compiled.rules_reading(proposed)
         values = dict(proposed)
@@ -275,7 +275,7 @@ class ProposalCheck:
             broken.extend(reason)
             for name in rule.parameters:
                 if reason and checks.full(name) in verdicts:
-                    verdicts[checks.full(name)].reasons.extend(reason)
+                    verdicts[checks.full(name)].reasons.extend(map(render_problem, reason))
         return broken
 
     def current_value(self, checks: ClassChecks, name: str) -> Any:

@@ -1,7 +1,7 @@
 """Nodes that declare their parameters by hand, as most rclpy nodes do, in a process of their own.
 
 ``python -m tests.import_node.hand_written_nodes NAME:KIND ...`` starts one node per
-argument (KIND: driver, dynamic) and prints "ready" once every node is declared.
+argument (KIND: driver, dynamic, lossy) and prints "ready" once every node is declared.
 """
 
 from __future__ import annotations
@@ -75,7 +75,15 @@ def dynamic(name: str) -> Node:
     return node
 
 
-KINDS = {"driver": driver, "dynamic": dynamic}
+def lossy(name: str) -> Node:
+    """A parameter that is also the namespace of another: no schema can state both."""
+    node = Node(name)
+    node.declare_parameter("limits", 1.0)
+    node.declare_parameter("limits.upper", 2.0)
+    return node
+
+
+KINDS = {"driver": driver, "dynamic": dynamic, "lossy": lossy}
 
 
 def main(specs: list[str]) -> None:

@@ -101,6 +101,25 @@ def test_optional_and_dynamically_typed_parameters_import_as_such(tmp_path: Path
     }
 
 
+def test_a_parameter_a_schema_cannot_state_is_left_out_with_a_warning_and_exit_1(
+    tmp_path: Path,
+) -> None:
+    node = f"/{unique('lossy')}"
+    output = tmp_path / "lossy.yaml"
+    with demo_nodes(f"{node[1:]}:lossy", module=NODES):
+        done = import_node(node, "-o", str(output))
+    assert done.returncode == 1, done.stderr
+    lines = done.stderr.splitlines()  # rclpy's own parameters first, as notes
+    assert all(": note: declared by rclpy itself: left out" in line for line in lines[:-2])
+    assert lines[-2:] == [
+        f"{node}: limits.upper: warning: 'limits' is a parameter too, so it cannot be a "
+        "namespace: left out",
+        "imported 1 of 2 parameters; 1 left out (see warnings)",
+    ]
+    schema = yaml.safe_load(output.read_text(encoding="utf-8"))
+    assert schema["parameters"] == {"limits": {"type": "double", "default": 1.0}}
+
+
 def test_a_node_that_is_not_there_exits_2() -> None:
     done = import_node(f"/{unique('nobody')}", "--timeout", "1")
     assert done.returncode == 2

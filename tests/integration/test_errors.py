@@ -10,7 +10,13 @@ from rclpy.exceptions import ParameterImmutableException
 
 import genparams
 from genparams.audit.findings import DRIFT_DEFAULT, VIOLATION, Finding
-from genparams.errors import CommandError, GenparamsError, render_problem
+from genparams.errors import (
+    CommandError,
+    GenparamsError,
+    ParameterProblem,
+    render_problem,
+    render_problems,
+)
 from genparams.runtime.node.consistency import UndeclareRefusedError
 from genparams.schema.errors import Location, SchemaError, SchemaProblem
 
@@ -42,6 +48,13 @@ def test_errors_keep_the_kinds_users_catch() -> None:
     assert issubclass(ValueTypeError, ValueError)
 
 
+def test_one_record_and_one_renderer_from_the_runtime_up() -> None:
+    from genparams.runtime.core import problems
+
+    assert genparams.render_problem is render_problem is problems.render_problem
+    assert genparams.ParameterProblem is ParameterProblem is problems.ParameterProblem
+
+
 def test_the_package_root_exports_the_errors() -> None:
     for name in (
         "GenparamsError",
@@ -68,6 +81,16 @@ def test_problems_render_one_way() -> None:
     )
     hidden = Finding("/cam", VIOLATION, "gain\u200b", "refused")
     assert hidden.text() == "/cam: gain\\u200b: refused [violation]"
+    refused = ParameterProblem("camera.fps", "must be > 0 (gt), got -1")
+    assert str(refused) == render_problem(refused) == "camera.fps: must be > 0 (gt), got -1"
+    rule = ParameterProblem("", "rule 'order' broken: min <= max is false for min=2, max=1")
+    assert render_problems([refused, rule]) == (
+        "camera.fps: must be > 0 (gt), got -1; "
+        "rule 'order' broken: min <= max is false for min=2, max=1"
+    )
+    assert render_problem(ParameterProblem("x", "got 'a\u3164'", rule="r", place="/n")) == (
+        "/n: x: got 'a\\u3164' [r]"
+    )
 
 
 def test_a_command_error_shows_every_character_and_keeps_lines_of_errors() -> None:

@@ -1,9 +1,11 @@
 """Every command keeps the exit codes docs/cli.md promises.
 
 0 on success, 1 when a check finds a problem, 2 for bad input or usage. Each
-command has a run of each kind it can give (tune, audit and import-node only
-their bad input, which needs no running node), and every code-2 run says why on
-stderr, through `genparams.cli.main`, never with a traceback.
+command has a run of each kind it can give (audit and import-node only their bad
+input here: their other codes need a running node, and
+tests/tune/test_audit.py and tests/import_node/test_import_node.py prove them),
+and every code-2 run says why on stderr, through `genparams.cli.main`, never with
+a traceback. `genparams tune` serves until interrupted, then exits 0.
 """
 
 from __future__ import annotations
@@ -12,6 +14,10 @@ import argparse
 import contextlib
 import io
 import json
+import secrets
+import signal
+import subprocess
+import sys
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -149,7 +155,8 @@ def run(argv: list[str]) -> tuple[int, str, str]:
 
 def test_every_command_has_a_success_and_a_bad_input() -> None:
     covered = {(r.command, r.code) for r in RUNS}
-    graph_only = {"tune", "audit", "import-node"}  # their runs that succeed need a live node
+    graph_only = {"audit", "import-node"}  # their runs that succeed need a live node
+    covered.add(("tune", 0))  # test_tune_exits_0_once_interrupted
     for name in command_names():
         assert (name, 2) in covered, name
         assert name in graph_only or (name, 0) in covered, name
@@ -182,3 +189,23 @@ def test_a_command_error_is_printed_once_with_its_code(
     captured = capsys.readouterr()
     assert captured.out == ""
     assert captured.err == "gain\\u200b: wrong\nsecond line\n"
+
+
+def test_tune_exits_0_once_interrupted(tmp_path: Path) -> None:
+    token = secrets.token_urlsafe(32)
+    command = [sys.executable, "-m", "genparams", "tune", "--port", "0", "--token", token]
+    server = subprocess.Popen(
+        command, cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
+    )
+    try:
+        assert server.stdout is not None
+        first = server.stdout.readline()  # once serving; empty if the command ended instead
+        assert first.startswith("genparams tune: serving http://127.0.0.1:"), first
+        server.send_signal(signal.SIGINT)
+        _, stderr = server.communicate(timeout=120)
+    finally:
+        if server.poll() is None:
+            server.kill()
+            server.communicate()
+    assert server.returncode == 0, stderr
+    assert "Traceback" not in stderr

@@ -115,7 +115,7 @@ def test_a_prefix_can_be_declared_once(ros: RosHarness, tmp_path: Path) -> None:
     module.MotionParams.declare(node, prefix="left")
     with pytest.raises(ParameterDeclarationError) as caught:
         module.MotionParams.declare(node, prefix="left")
-    assert caught.value.problems == (
+    assert tuple(map(str, caught.value.problems)) == (
         "MotionParams is already declared at prefix 'left': declare a class once per prefix "
         "and share the view it returns",
     )

@@ -33,7 +33,7 @@ def test_failing_custom_validator_rejects_instead_of_crashing(
     node = ros.node(args=["-p", "fragile:=zzz", "-p", "lanes:=3"])
     with pytest.raises(ParameterDeclarationError) as caught:
         module.CustomDemoParams.declare(node)
-    assert caught.value.problems == (
+    assert tuple(map(str, caught.value.problems)) == (
         "fragile: override rejected: custom validator tests.custom_checks:always_raises "
         "raised RuntimeError: checker is broken",
         "lanes: override rejected: 3 is odd (tests.custom_checks:is_even)",

@@ -29,4 +29,8 @@ def test_one_message_for_a_required_parameter_taken_by_other_code(
     node.declare_parameter("serial", "by other code")
     with pytest.raises(ParameterDeclarationError) as caught:
         params_class.declare(node)
-    assert caught.value.problems == ("serial: already declared on this node by other code",)
+    (problem,) = caught.value.problems
+    assert (problem.key, problem.message) == (
+        "serial",
+        "already declared on this node by other code",
+    )

@@ -57,8 +57,7 @@ def test_every_wrongly_typed_start_value_is_reported(
     with pytest.raises(ParameterDeclarationError) as caught:
         rig.RigParams.declare(node)
     problems = caught.value.problems
-    assert len(problems) == 2
-    assert problems[0].startswith("gain: ") and problems[1].startswith("label: ")
+    assert [problem.key for problem in problems] == ["gain", "label"]
 
 
 def test_on_change_of_a_snapshot_names_the_live_view(
@@ -130,7 +129,7 @@ def test_a_default_a_custom_validator_rejects_is_reported_as_the_default(
     module = load_generated(schema, tmp_path)
     with pytest.raises(ParameterDeclarationError) as caught:
         module.OddParams.declare(ros.node())
-    assert caught.value.problems == (
+    assert tuple(map(str, caught.value.problems)) == (
         "lanes: default rejected: 3 is odd (tests.custom_checks:is_even)",
     )
 

@@ -72,8 +72,9 @@ def test_overrides_at_start(edge: Edge, ros: RosHarness, edges_class: type) -> N
     with pytest.raises(ParameterDeclarationError) as caught:
         edges_class.declare(node)  # type: ignore[attr-defined]
     (problem,) = caught.value.problems
-    assert problem.startswith(f"{edge.name}: override rejected: "), problem
-    assert edge.problem in problem, problem
+    assert problem.key == edge.name, problem
+    assert problem.message.startswith("override rejected: "), problem
+    assert edge.problem in problem.message, problem
 
 
 def test_the_table_covers_every_parameter_both_ways(tmp_path: Path) -> None:

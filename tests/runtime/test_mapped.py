@@ -161,7 +161,7 @@ def test_new_key_overrides_are_checked_at_declare_too(
     node = ros.node(args=args)
     with pytest.raises(ParameterDeclarationError) as caught:
         arm.ArmParams.declare(node)
-    assert caught.value.problems == (
+    assert tuple(map(str, caught.value.problems)) == (
         "gains.wrist.p: override rejected: must be >= 0.0 (ge), got -1.0",
     )
     assert not node.has_parameter("joints")

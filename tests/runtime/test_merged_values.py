@@ -8,6 +8,7 @@ from pathlib import Path
 
 import pytest
 
+from genparams.runtime.core.problems import ParameterProblem
 from genparams.runtime.core.rule_check import MergedValues, broken_rules
 from genparams.runtime.core.spec import compile_schema
 from tests.support import load_generated
@@ -47,6 +48,9 @@ def test_a_rule_reads_the_proposed_value_and_the_committed_other(
     assert broken_rules(committed, {"camera.fps": 5.0}, str) == []
     assert broken_rules(committed, {"max_speed": 1.5}, str) == []
     assert broken_rules(committed, {"max_speed": 1.0}, lambda name: f"front.{name}") == [
-        "rule 'speed_order' broken: min_speed <= max_speed is false for "
-        "front.min_speed=1.5, front.max_speed=1.0"
+        ParameterProblem(
+            "",
+            "rule 'speed_order' broken: min_speed <= max_speed is false for "
+            "front.min_speed=1.5, front.max_speed=1.0",
+        )
     ]

@@ -148,7 +148,7 @@ def test_conflicting_old_and_new_overrides_refuse_to_start(
     )
     with pytest.raises(ParameterDeclarationError) as caught:
         drive.DriveParams.declare(node)
-    assert caught.value.problems == (
+    assert tuple(map(str, caught.value.problems)) == (
         "max_speed: given as 1.0 and under its old name speed_limit as 2.0; keep only max_speed",
     )
     assert not node.has_parameter("wheels.base")

@@ -138,7 +138,7 @@ def test_overrides_that_break_rules_are_reported_with_every_other_problem(
     node = ros.node(args=["-p", "min_speed:=5.0", "-p", "weights:=[1.0]", "-p", "height:=0"])
     with pytest.raises(ParameterDeclarationError) as caught:
         module.MotionParams.declare(node)
-    assert caught.value.problems == (
+    assert tuple(map(str, caught.value.problems)) == (
         "height: override rejected: must be > 0 (gt), got 0",
         "rule 'speed_order' broken: min_speed <= max_speed is false for "
         "min_speed=5.0, max_speed=2.0",

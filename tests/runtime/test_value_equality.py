@@ -11,6 +11,7 @@ import pytest
 from genparams.runtime import Changes, ParameterDeclarationError
 from genparams.runtime.core.changes import Change, same_value
 from genparams.runtime.core.errors import RemoteSetError
+from genparams.runtime.core.problems import ParameterProblem
 
 NAN = math.nan
 OTHER_NAN = float("nan")  # another object: a tuple compares its items by identity first
@@ -55,21 +56,31 @@ def test_changes_list_each_changed_name_once() -> None:
 
 
 def test_declaration_errors_list_every_problem() -> None:
-    one = ParameterDeclarationError("motion", "/robot", ["speed: must be > 0 (gt), got -1"])
-    assert one.problems == ("speed: must be > 0 (gt), got -1",)
+    speed = ParameterProblem("speed", "must be > 0 (gt), got -1")
+    one = ParameterDeclarationError("motion", "/robot", [speed])
+    assert one.problems == (speed,)
     assert str(one) == (
         "/robot: cannot declare motion parameters (1 problem):\n  - speed: must be > 0 (gt), got -1"
     )
-    two = ParameterDeclarationError("motion", "MotionParams.defaults()", ("a", "b"), doing="build")
+    two = ParameterDeclarationError(
+        "motion",
+        "MotionParams.defaults()",
+        (ParameterProblem("a", "no such parameter"), ParameterProblem("", "rule 'r' broken")),
+        doing="build",
+    )
     assert str(two) == (
-        "MotionParams.defaults(): cannot build motion parameters (2 problems):\n  - a\n  - b"
+        "MotionParams.defaults(): cannot build motion parameters (2 problems):\n"
+        "  - a: no such parameter\n  - rule 'r' broken"
     )
 
 
 def test_remote_set_errors_say_who_refused() -> None:
-    before = RemoteSetError("speed: must be > 0 (gt), got -1", sent=False)
-    assert str(before) == "rejected before sending: speed: must be > 0 (gt), got -1"
-    assert before.reason == "speed: must be > 0 (gt), got -1" and before.sent is False
+    speed = ParameterProblem("speed", "must be > 0 (gt), got -1")
+    before = RemoteSetError.before_sending([speed, ParameterProblem("gain\u200b", "no such")])
+    reason = "speed: must be > 0 (gt), got -1; gain\\u200b: no such"
+    assert str(before) == f"rejected before sending: {reason}"
+    assert before.reason == reason and before.sent is False
+    assert before.problems == (speed, ParameterProblem("gain\u200b", "no such"))
     after = RemoteSetError("busy", sent=True)
     assert str(after) == "rejected by the node: busy"
-    assert after.reason == "busy" and after.sent is True
+    assert after.reason == "busy" and after.sent is True and after.problems == ()

@@ -8,6 +8,7 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 from genparams.runtime.core.naming import ENTRY_KEY, ENTRY_KEY_RULE, OVERRIDE_KEYS, is_entry_key
+from genparams.runtime.core.problems import ParameterProblem
 from genparams.runtime.core.resolve import resolve_values
 from genparams.runtime.core.spec import CompiledParam, CompiledSchema
 
@@ -73,20 +74,23 @@ def keys_under(map_path: str, names: Iterable[str]) -> list[str]:
 
 def override_keys(
     compiled: CompiledSchema, names: Iterable[str], full_name: Callable[[str], str]
-) -> tuple[dict[str, list[str]], list[str]]:
+) -> tuple[dict[str, list[str]], list[ParameterProblem]]:
     """The keys of each open group, by key slot, from the relative ``names`` given
     (``sensors.front.topic`` gives ``front`` to ``sensors``), in order of first
     appearance; and a problem for each key that cannot name an entry."""
     keys: dict[str, list[str]] = {}
-    problems: list[str] = []
+    problems: list[ParameterProblem] = []
     names = list(names)
     for map_path in open_maps(compiled):
         found = keys_under(map_path, names)
         for key in [k for k in found if not is_entry_key(k)]:
             found.remove(key)
             problems.append(
-                f"{full_name(map_path)}: key {key!r} given in the overrides cannot name an "
-                f"entry: use {ENTRY_KEY_RULE}"
+                ParameterProblem(
+                    full_name(map_path),
+                    f"key {key!r} given in the overrides cannot name an entry: "
+                    f"use {ENTRY_KEY_RULE}",
+                )
             )
         keys[key_slot(compiled, map_path)] = found
     return keys, problems
@@ -140,7 +144,7 @@ def resolve_all(
     source: str = "override",
     lenient: bool = False,
     given_names: Iterable[str] = (),
-) -> tuple[dict[str, CompiledParam], dict[str, Any], list[str]]:
+) -> tuple[dict[str, CompiledParam], dict[str, Any], list[ParameterProblem]]:
     """Parameters (fixed ones, then entries) with their starting values, and every problem.
 
     Key parameters are fixed, so their values are known before the entries

@@ -12,6 +12,7 @@ from typing import Any, ClassVar, Protocol, Self, TypeVar
 from genparams.runtime.core.changes import Changes
 from genparams.runtime.core.entries import flatten, resolve_all
 from genparams.runtime.core.errors import DetachedSnapshotError, ParameterDeclarationError
+from genparams.runtime.core.problems import ParameterProblem
 from genparams.runtime.core.spec import SchemaSpec, compile_schema
 from genparams.runtime.core.tree import Group, build_tree, to_dict
 
@@ -58,9 +59,9 @@ class ParamsView(Group):
         unknown = sorted(set(given) - set(parameters))
         every = compiled.parameters
         problems.extend(
-            f"{name}: {every[name].spec.condition_text}"
-            if name in every
-            else f"{name}: no such parameter"
+            ParameterProblem(
+                name, every[name].spec.condition_text if name in every else "no such parameter"
+            )
             for name in unknown
         )
         if problems:

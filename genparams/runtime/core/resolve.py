@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from typing import Any
 
+from genparams.runtime.core.problems import ParameterProblem
 from genparams.runtime.core.spec import CompiledParam, CompiledSchema
 from genparams.runtime.core.types import ValueTypeError
 
@@ -16,7 +17,7 @@ def resolve_values(
     source: str = "override",
     parameters: Mapping[str, CompiledParam] | None = None,
     lenient: bool = False,
-) -> tuple[dict[str, Any], list[str]]:
+) -> tuple[dict[str, Any], list[ParameterProblem]]:
     """Typed values for every parameter, and every problem found (all of them, not the first).
 
     Cross-parameter rules are checked on the result, so a set of overrides that
@@ -30,7 +31,7 @@ def resolve_values(
     the fixed parameters of ``compiled``.
     """
     values: dict[str, Any] = {}
-    problems: list[str] = []
+    problems: list[ParameterProblem] = []
     if parameters is None:
         parameters = compiled.parameters
     for name, param in parameters.items():
@@ -40,13 +41,16 @@ def resolve_values(
                 raw = given[name]
                 value = param.type.coerce_default(raw) if lenient else param.type.from_ros(raw)
             except ValueTypeError as exc:
-                problems.append(f"{shown}: {source} has the wrong type: {exc}")
+                problems.append(ParameterProblem(shown, f"{source} has the wrong type: {exc}"))
                 continue
             origin = source
         elif param.spec.required:
             problems.append(
-                f"{shown}: required parameter is not set "
-                f"(pass -p {shown}:=<{param.type.name}> or set it in a params file)"
+                ParameterProblem(
+                    shown,
+                    f"required parameter is not set (pass -p {shown}:=<{param.type.name}> "
+                    "or set it in a params file)",
+                )
             )
             continue
         elif param.spec.optional:  # not set: no value to check
@@ -56,7 +60,7 @@ def resolve_values(
             value, origin = param.type.coerce_default(param.spec.default), "default"
         reason = param.check(value)
         if reason is not None:
-            problems.append(f"{shown}: {origin} rejected: {reason}")
+            problems.append(ParameterProblem(shown, f"{origin} rejected: {reason}"))
             continue
         values[name] = value
     # Rules whose parameters all resolved; the others' problems are already listed.
@@ -64,5 +68,5 @@ def resolve_values(
         if all(name in values for name in rule.parameters):
             reason = rule.violation(values, full_name)
             if reason is not None:
-                problems.append(reason)
+                problems.append(ParameterProblem("", reason))
     return values, problems

@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from typing import TYPE_CHECKING, Any
 
+from genparams.runtime.core.problems import ParameterProblem
 from genparams.runtime.core.rules import CompiledRule
 from genparams.runtime.core.spec import CompiledParam, compile_schema
 from genparams.runtime.core.tree import get_path
@@ -40,8 +41,8 @@ class MergedValues(Mapping[str, Any]):
 
 def broken_rules(
     committed: ParamsView, proposed: Mapping[str, Any], shown: Callable[[str], str]
-) -> list[str]:
-    """A reason per rule that ``proposed`` (relative names, typed values) would break.
+) -> list[ParameterProblem]:
+    """A problem per rule that ``proposed`` (relative names, typed values) would break.
 
     Only rules that read a proposed parameter are evaluated: the committed values
     already satisfy every rule.
@@ -55,11 +56,12 @@ def broken_rules(
 
 def violations(
     rules: Iterable[CompiledRule], values: Mapping[str, Any], shown: Callable[[str], str]
-) -> list[str]:
-    """A reason per rule that ``values`` (relative ROS names, typed) break."""
-    reasons = []
+) -> list[ParameterProblem]:
+    """A problem per rule that ``values`` (relative ROS names, typed) break: no key, the
+    message names the rule and every value it read."""
+    problems = []
     for rule in rules:
         reason = rule.violation(values, shown)
         if reason is not None:
-            reasons.append(reason)
-    return reasons
+            problems.append(ParameterProblem("", reason))
+    return problems

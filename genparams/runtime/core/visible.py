@@ -27,6 +27,8 @@ _IGNORABLE = re.compile(
 
 def visible(text: str) -> str:
     """``text`` with each character that would not show escaped; other text unchanged."""
+    if text.isascii() and text.isprintable():  # most messages; no ASCII character is ignorable
+        return text
     if text.isprintable() and _IGNORABLE.search(text) is None:
         return text
     return "".join(_escaped(char) for char in text)

@@ -16,6 +16,7 @@ from rcl_interfaces.msg import SetParametersResult
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
+from genparams.runtime.core.problems import ParameterProblem, render_problems
 from genparams.runtime.core.spec import CompiledParam
 from genparams.runtime.node.declaring import Declaration, descriptor_for, ros_parameter
 from genparams.runtime.node.deprecation import Notices
@@ -92,13 +93,17 @@ class Aliases:
                 continue
             if old not in values or current not in values:
                 given, missing = (old, current) if old in values else (current, old)
-                reasons.append(f"{given}: must be set together with {missing}, its other name")
+                reasons.append(
+                    ParameterProblem(given, f"must be set together with {missing}, its other name")
+                )
             elif not _same(values[old], values[current]):
                 reasons.append(
-                    f"{old}: is the old name of {current}, but was given a different value"
+                    ParameterProblem(
+                        old, f"is the old name of {current}, but was given a different value"
+                    )
                 )
         if reasons:
-            return SetParametersResult(successful=False, reason="; ".join(reasons))
+            return SetParametersResult(successful=False, reason=render_problems(reasons))
         return _ACCEPTED
 
 

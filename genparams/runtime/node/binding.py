@@ -23,6 +23,7 @@ from genparams.runtime.core.entries import resolve_all
 from genparams.runtime.core.errors import ParameterDeclarationError
 from genparams.runtime.core.naming import check_prefix, join_prefix, strip_prefix
 from genparams.runtime.core.params_view import ParamsView
+from genparams.runtime.core.problems import ParameterProblem
 from genparams.runtime.core.rule_check import broken_rules
 from genparams.runtime.core.spec import CompiledParam, compile_schema
 from genparams.runtime.core.tree import (
@@ -89,8 +90,11 @@ class Binding(Generic[P]):
                 spec.name,
                 node.get_fully_qualified_name(),
                 [
-                    f"{params_cls.__name__} is already declared at {where}: declare a class once "
-                    "per prefix and share the view it returns"
+                    ParameterProblem(
+                        "",
+                        f"{params_cls.__name__} is already declared at {where}: declare a class "
+                        "once per prefix and share the view it returns",
+                    )
                 ],
             )
 
@@ -102,13 +106,15 @@ class Binding(Generic[P]):
             compiled, reader.read, full, given_names=[n for n in given_names if n is not None]
         )
         clashes = [
-            f"{full(name)}: already declared on this node by {owner.schema_name}"
+            ParameterProblem(full(name), f"already declared on this node by {owner.schema_name}")
             for name in parameters
             if (owner := sets.owner_of(full(name))) is not None
         ]
+        # The reader's "declared by other code" of a name a clash already explains goes.
+        clashing = {clash.key for clash in clashes}
         problems = [
             *clashes,
-            *(p for p in reader.with_problems(problems) if not _names_clash(p, clashes)),
+            *(p for p in reader.with_problems(problems) if p.key not in clashing),
         ]
         if problems:
             raise ParameterDeclarationError(spec.name, node.get_fully_qualified_name(), problems)
@@ -155,8 +161,8 @@ class Binding(Generic[P]):
 
     def check(
         self, parameters: Sequence[Parameter], declaring: bool
-    ) -> dict[CompiledParam, Any] | list[str]:
-        """This class's part of a request, typed, or the reasons it is refused."""
+    ) -> dict[CompiledParam, Any] | list[ParameterProblem]:
+        """This class's part of a request, typed, or the problems it is refused for."""
         typed, reasons = check_each(self.owned, parameters)
         if self.mapped is not None and not reasons:
             reasons.extend(self.mapped.check(self.current, parameters, typed, declaring))
@@ -296,9 +302,9 @@ class Binding(Generic[P]):
 
 def check_each(
     owned: Mapping[str, CompiledParam], parameters: Sequence[Parameter]
-) -> tuple[dict[CompiledParam, Any], list[str]]:
+) -> tuple[dict[CompiledParam, Any], list[ParameterProblem]]:
     """The values of ``owned`` parameters (by full ROS name) in a request, typed, and a
-    reason per value refused: its type, then its own rules. Other names are skipped."""
+    problem per value refused: its type, then its own rules. Other names are skipped."""
     reasons = []
     typed: dict[CompiledParam, Any] = {}
     for parameter in parameters:
@@ -306,20 +312,15 @@ def check_each(
         if param is None:
             continue
         if parameter.type_ is _NOT_SET:
-            reasons.append(f"{parameter.name}: cannot be undeclared")
+            reasons.append(ParameterProblem(parameter.name, "cannot be undeclared"))
             continue
         try:
             value = param.type.from_ros(parameter.value)
         except ValueError as exc:
-            reasons.append(f"{parameter.name}: {exc}")
+            reasons.append(ParameterProblem(parameter.name, str(exc)))
             continue
         reason = param.check(value)
         if reason is not None:
-            reasons.append(f"{parameter.name}: {reason}")
+            reasons.append(ParameterProblem(parameter.name, reason))
         typed[param] = value
     return typed, reasons
-
-
-def _names_clash(problem: str, clashes: list[str]) -> bool:
-    """The reader's "declared by other code" for a name a clash already explains."""
-    return any(problem.split(":", 1)[0] == clash.split(":", 1)[0] for clash in clashes)

@@ -44,6 +44,7 @@ from rclpy.exceptions import ParameterImmutableException
 from rclpy.parameter import Parameter
 
 from genparams.runtime.core.errors import GenparamsError
+from genparams.runtime.core.problems import ParameterProblem, render_problem, render_problems
 from genparams.runtime.node import rclpy_internals as internals
 
 if TYPE_CHECKING:
@@ -72,8 +73,8 @@ class DeclaredClass(Protocol):
 
     def check(
         self, parameters: Sequence[Parameter], declaring: bool
-    ) -> dict[CompiledParam, Any] | list[str]:
-        """Its part of a request, typed, or the reasons it is refused."""
+    ) -> dict[CompiledParam, Any] | list[ParameterProblem]:
+        """Its part of a request, typed, or the problems it is refused for."""
 
     def commit(self, updates: dict[CompiledParam, Any]) -> bool:
         """Commit values the node stored; False (nothing done) when they change its shape."""
@@ -90,11 +91,12 @@ class UndeclareRefusedError(ParameterImmutableException, GenparamsError):
     """
 
     def __init__(self, name: str, schema: str) -> None:
-        Exception.__init__(
-            self,
-            f"{name}: cannot be undeclared: {schema} declares it and its typed view would "
+        refusal = ParameterProblem(
+            name,
+            f"cannot be undeclared: {schema} declares it and its typed view would "
             "keep the value (parameter services refuse it the same way)",
         )
+        Exception.__init__(self, render_problem(refusal))
         self.name = name
 
 
@@ -144,7 +146,7 @@ class NodeSets:
     def check(self, parameters: Sequence[Parameter]) -> SetParametersResult:
         """genparams' on-set callback, run after every other one: each class checks its part."""
         declaring, accepted = self.frames[-1]
-        reasons: list[str] = []
+        reasons: list[ParameterProblem] = []
         for binding in self.bindings:
             outcome = binding.check(parameters, declaring)
             if isinstance(outcome, list):
@@ -152,7 +154,7 @@ class NodeSets:
             elif outcome:
                 accepted[binding] = outcome
         if reasons:
-            return SetParametersResult(successful=False, reason="; ".join(reasons))
+            return SetParametersResult(successful=False, reason=render_problems(reasons))
         return _ACCEPTED
 
     def commit_then_post_set(self, parameters: Sequence[Parameter]) -> None:

@@ -14,6 +14,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from typing import TYPE_CHECKING, Any
 
+from genparams.runtime.core.problems import ParameterProblem
 from genparams.runtime.core.spec import CONFIGURE_ONLY_TEXT
 from genparams.runtime.node.rclpy_internals import lifecycle_state
 
@@ -27,8 +28,8 @@ CONFIGURE_STATES = frozenset({"unconfigured", "inactive", "configuring", "cleani
 
 def mutability_problem(
     node: Node, typed: Mapping[CompiledParam, Any], full_name: Callable[[str], str]
-) -> list[str]:
-    """A reason per configure-only parameter of ``typed`` the node's state forbids setting."""
+) -> list[ParameterProblem]:
+    """A problem per configure-only parameter of ``typed`` the node's state forbids setting."""
     names = [param.name for param in typed if param.spec.configure_only]
     if not names:
         return []
@@ -36,6 +37,8 @@ def mutability_problem(
     if state is None or state in CONFIGURE_STATES:
         return []
     return [
-        f"{full_name(name)}: {CONFIGURE_ONLY_TEXT}; the node is {state} (deactivate it first)"
+        ParameterProblem(
+            full_name(name), f"{CONFIGURE_ONLY_TEXT}; the node is {state} (deactivate it first)"
+        )
         for name in names
     ]

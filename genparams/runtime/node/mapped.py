@@ -38,6 +38,7 @@ from rclpy.parameter import Parameter
 from genparams.runtime.core.changes import Change
 from genparams.runtime.core.entries import expand, key_slot, map_chain, open_maps, template_keys
 from genparams.runtime.core.naming import join_prefix, strip_prefix
+from genparams.runtime.core.problems import ParameterProblem, render_problems
 from genparams.runtime.core.resolve import resolve_values
 from genparams.runtime.core.spec import CompiledParam, CompiledSchema
 from genparams.runtime.core.tree import get_path
@@ -129,14 +130,17 @@ class MappedEntries:
         parameters: Sequence[Parameter],
         typed: Mapping[CompiledParam, Any],
         declaring: bool,
-    ) -> list[str]:
+    ) -> list[ParameterProblem]:
         """Refuse sets of undeclared entries, and changes of keys whose new entries cannot be
         declared (bad override, refused by another on-set callback). ``current`` is the
         owner's committed view."""
         if not declaring:  # the entries' own declaration round declares them
             strays = [p.name for p in parameters if self.is_undeclared_entry(p.name)]
             if strays:
-                return [f"{name}: no such entry: its key is not in the key list" for name in strays]
+                return [
+                    ParameterProblem(name, "no such entry: its key is not in the key list")
+                    for name in strays
+                ]
         proposed = {
             param.name: value
             for param, value in typed.items()
@@ -158,12 +162,13 @@ class MappedEntries:
         problems = reader.with_problems(problems)
         changed = ", ".join(self.full_name(name) for name in proposed)
         if problems:
-            return [f"{changed}: cannot declare the new entries: " + "; ".join(problems)]
+            reasons = render_problems(problems)
+            return [ParameterProblem(changed, f"cannot declare the new entries: {reasons}")]
         removed = [name for name in self.entries if name not in expanded]
         refusal = self._refusal_of_others(added, new_values, removed)
         if refusal is None:
             return []
-        return [f"{changed}: the new entries were refused: {refusal}"]
+        return [ParameterProblem(changed, f"the new entries were refused: {refusal}")]
 
     def is_undeclared_entry(self, full_name: str) -> bool:
         """``full_name`` has the shape of an entry of the owner but is not declared."""
@@ -218,7 +223,7 @@ class MappedEntries:
         problems = reader.with_problems(problems)
         if problems:
             owner.node.get_logger().error(
-                "mapped entries keep their previous keys: " + "; ".join(problems)
+                "mapped entries keep their previous keys: " + render_problems(problems)
             )
             return None
         changed.extend(Change(name, values[name], None) for name in removed)

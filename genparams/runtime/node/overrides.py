@@ -8,6 +8,7 @@ from typing import Any
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
+from genparams.runtime.core.problems import ParameterProblem
 from genparams.runtime.node.rclpy_internals import parameter_overrides
 
 _MISSING = object()
@@ -38,7 +39,7 @@ class OverrideReader:
         self.old_names = old_names or {}
         # rclpy exposes overrides only through a private attribute.
         self.overrides: dict[str, Parameter] = parameter_overrides(node)
-        self.problems: list[str] = []
+        self.problems: list[ParameterProblem] = []
         self.predeclared: list[str] = []  # full names
         self.renamed: list[tuple[str, str]] = []  # (old full name, full name) an override used
         self.given: list[str] = []  # relative names an override was found for
@@ -60,8 +61,11 @@ class OverrideReader:
                     self.renamed.append((old_full, full_name))
                 elif old_value != value:
                     self.problems.append(
-                        f"{full_name}: given as {value!r} and under its old name {old_full} "
-                        f"as {old_value!r}; keep only {full_name}"
+                        ParameterProblem(
+                            full_name,
+                            f"given as {value!r} and under its old name {old_full} "
+                            f"as {old_value!r}; keep only {full_name}",
+                        )
                     )
             if value is not _MISSING:
                 given[name] = value
@@ -71,7 +75,9 @@ class OverrideReader:
     def _value(self, full_name: str) -> Any:
         if self.node.has_parameter(full_name):
             if full_name not in self.overrides and full_name not in self.adopted:
-                self.problems.append(f"{full_name}: already declared on this node by other code")
+                self.problems.append(
+                    ParameterProblem(full_name, "already declared on this node by other code")
+                )
                 self.taken.append(full_name)
                 return _MISSING
             self.predeclared.append(full_name)
@@ -80,14 +86,14 @@ class OverrideReader:
             return self.overrides[full_name].value
         return _MISSING
 
-    def with_problems(self, problems: list[str]) -> list[str]:
+    def with_problems(self, problems: list[ParameterProblem]) -> list[ParameterProblem]:
         """This reader's problems, then ``problems`` less what they repeat.
 
         A parameter other code declared first is reported once, as that: it is
         not also "required parameter is not set".
         """
-        repeated = tuple(f"{name}: required parameter is not set" for name in self.taken)
-        return [*self.problems, *(p for p in problems if not p.startswith(repeated))]
+        taken = set(self.taken)
+        return [*self.problems, *(p for p in problems if p.key not in taken)]
 
     def release_predeclared(self) -> None:
         """Undeclare what rclpy declared from overrides, so it is declared again, fully."""

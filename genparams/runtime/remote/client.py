@@ -29,11 +29,11 @@ from genparams.runtime.core.entries import (
 from genparams.runtime.core.errors import RemoteParameterError, RemoteSetError
 from genparams.runtime.core.naming import check_prefix, is_entry_key, join_prefix, strip_prefix
 from genparams.runtime.core.params_view import ParamsView
+from genparams.runtime.core.problems import ParameterProblem, render_problems
 from genparams.runtime.core.spec import CompiledParam, compile_schema
 from genparams.runtime.core.suggest import did_you_mean
 from genparams.runtime.core.tree import build_tree
 from genparams.runtime.core.types import ValueTypeError
-from genparams.runtime.core.visible import visible
 from genparams.runtime.node.declaring import ros_parameter
 from genparams.runtime.remote.typed_future import TypedFuture
 
@@ -143,13 +143,13 @@ class RemoteParams(Generic[P]):
                         self.client.list_parameters([], 0, report_missing)
                     return
                 values: dict[str, Any] = {}
-                problems: list[str] = []
+                problems: list[ParameterProblem] = []
                 for name, full, message in zip(names, full_names, messages, strict=True):
                     try:
                         python = parameter_value_to_python(message)
                         values[name] = parameters[name].from_ros(python)
                     except ValueTypeError as exc:
-                        problems.append(f"{full}: {exc}")
+                        problems.append(ParameterProblem(full, str(exc)))
                 if problems:
                     raise self.not_following(problems)
                 then(values)
@@ -165,7 +165,9 @@ class RemoteParams(Generic[P]):
                 unset = [n for n, t in zip(names, types, strict=True) if t == _NOT_SET]
                 refused = [self.full_name(n) for n in unset if not parameters[n].spec.optional]
                 if refused:
-                    raise self.not_following([f"{full}: not set" for full in refused])
+                    raise self.not_following(
+                        [ParameterProblem(full, "not set") for full in refused]
+                    )
                 rest = {n: p for n, p in parameters.items() if n not in unset}
                 nones = dict.fromkeys(unset)
                 if rest:
@@ -178,16 +180,20 @@ class RemoteParams(Generic[P]):
         def report_missing(response_future: Future) -> None:
             try:
                 declared = set(response_future.result().result.names)
-                missing = [f"{full}: not declared" for full in full_names if full not in declared]
+                missing = [
+                    ParameterProblem(full, "not declared")
+                    for full in full_names
+                    if full not in declared
+                ]
                 result.set_exception(self.not_following(missing))
             except Exception as exc:
                 result.set_exception(exc)
 
         self.client.get_parameters(full_names, answered)
 
-    def not_following(self, problems: list[str]) -> RemoteParameterError:
+    def not_following(self, problems: list[ParameterProblem]) -> RemoteParameterError:
         return RemoteParameterError(
-            f"{self.target} does not follow {self.compiled.spec.name}: " + "; ".join(problems)
+            f"{self.target} does not follow {self.compiled.spec.name}: " + render_problems(problems)
         )
 
     def snapshot(self, values: Mapping[str, Any]) -> P:
@@ -220,7 +226,7 @@ class RemoteParams(Generic[P]):
         result: TypedFuture[None] = TypedFuture()
         typed, reasons = self.check(values)
         if reasons:
-            result.set_exception(RemoteSetError("; ".join(reasons), sent=False))
+            result.set_exception(RemoteSetError.before_sending(reasons))
             return result
         parameters = [
             ros_parameter(param, self.full_name(param.name), value)
@@ -243,22 +249,23 @@ class RemoteParams(Generic[P]):
 
     def check(
         self, values: Mapping[str, Any]
-    ) -> tuple[dict[str, tuple[CompiledParam, Any]], list[str]]:
-        """Typed values and the reasons the schema rejects them, worded as the node words them."""
+    ) -> tuple[dict[str, tuple[CompiledParam, Any]], list[ParameterProblem]]:
+        """Typed values and the problems the schema finds with them, worded as the node words
+        them."""
         typed: dict[str, tuple[CompiledParam, Any]] = {}
-        reasons: list[str] = []
+        reasons: list[ParameterProblem] = []
         for name, value in values.items():
             param = self.parameter(name)
             if param is None:
                 known = sorted([*self.compiled.parameters, *self.compiled.templates])
                 hint = did_you_mean(name, known)
                 reasons.append(
-                    visible(f"{name}: no such parameter in {self.compiled.spec.name}{hint}")
+                    ParameterProblem(name, f"no such parameter in {self.compiled.spec.name}{hint}")
                 )
                 continue
             reason = _check_one(param, value)
             if isinstance(reason, str):
-                reasons.append(f"{self.full_name(name)}: {reason}")
+                reasons.append(ParameterProblem(self.full_name(name), reason))
             else:
                 typed[param.name] = (param, reason[0])
         if reasons:
@@ -268,7 +275,7 @@ class RemoteParams(Generic[P]):
             if all(name in proposed for name in rule.parameters):
                 broken = rule.violation(proposed, self.full_name)
                 if broken is not None:
-                    reasons.append(broken)
+                    reasons.append(ParameterProblem("", broken))
         return typed, reasons
 
     def watch(self, callback: Callable[[Changes[P]], None]) -> RemoteWatch[P]:
