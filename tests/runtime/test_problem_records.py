@@ -95,7 +95,14 @@ def test_a_set_that_passes_builds_no_record(
 
     node = ros.node()
     cfg = arm.ArmParams.declare(node)
-    for module in ("binding", "rule_check", "lifecycle", "mapped", "consistency"):
+    modules = (
+        "node.binding",
+        "core.rule_check",
+        "node.lifecycle",
+        "node.mapped",
+        "node.consistency",
+    )
+    for module in modules:
         monkeypatch.setattr(f"genparams.runtime.{module}.ParameterProblem", Counted)
     for value in (0.5, 2.0, 1.0):
         (result,) = node.set_parameters([Parameter("gains.elbow.p", value=value)])
