@@ -26,11 +26,13 @@ from pathlib import Path
 
 from genparams.rclpy_import.convert import LEFT_OUT, item_place
 from genparams.rclpy_import.node_file import ImportedNode
+from genparams.rclpy_import.overrides import reads_overrides
 from genparams.rclpy_import.scan import DECLARE_ONE, Found
 from genparams.rclpy_import.values import Evaluator, Scope, UntranslatableError
 from genparams.runtime.core.naming import attribute_parts, class_name, module_name
 
 _READ_ATTRIBUTES = ("value",)
+LINE_LENGTH = 100  # the longest line a rewritten call is written on (ruff's E501 at 100)
 
 
 @dataclass(frozen=True)
@@ -49,9 +51,12 @@ class _Source:
             self.starts.append(self.starts[-1] + len(line))
 
     def offset(self, line: int, byte_column: int) -> int:
+        return self.starts[line - 1] + self.column(line, byte_column)
+
+    def column(self, line: int, byte_column: int) -> int:
+        """The character column of a byte column (as ast gives it) on ``line``."""
         text = self.lines[line - 1] if line - 1 < len(self.lines) else ""
-        column = len(text.encode("utf-8")[:byte_column].decode("utf-8", errors="replace"))
-        return self.starts[line - 1] + column
+        return len(text.encode("utf-8")[:byte_column].decode("utf-8", errors="replace"))
 
     def span(self, node: ast.AST) -> tuple[int, int]:
         start = self.offset(node.lineno, node.col_offset)  # type: ignore[attr-defined]
@@ -226,11 +231,32 @@ class _Patcher:
                 return
             start, end = self.source.span(call)
             quoted = self.name_text(call, founds[0])
-            self.edits.append(_Edit(start, end, f"self.get_parameter({quoted})"))
+            text = self.fitted(call, "self.get_parameter", [quoted], listed=False)
+            self.edits.append(_Edit(start, end, text))
             return
         start, end = self.source.span(call)
-        listed = ", ".join(self.name_text(call, found) for found in founds)
-        self.edits.append(_Edit(start, end, f"self.get_parameters([{listed}])"))
+        names = [self.name_text(call, found) for found in founds]
+        self.edits.append(_Edit(start, end, self.fitted(call, "self.get_parameters", names)))
+
+    def fitted(self, call: ast.Call, function: str, names: list[str], listed: bool = True) -> str:
+        """``function(names)`` in place of ``call``, written as ruff format would, so that
+        no line runs past LINE_LENGTH: on one line if the line fits, else the argument on
+        a line of its own, else one name a line."""
+        lines = self.source.lines
+        assert call.end_lineno is not None and call.end_col_offset is not None
+        first, last = lines[call.lineno - 1], lines[call.end_lineno - 1].rstrip("\r\n")
+        before = first[: self.source.column(call.lineno, call.col_offset)]
+        after = last[self.source.column(call.end_lineno, call.end_col_offset) :]
+        argument = f"[{', '.join(names)}]" if listed else names[0]
+        text = f"{function}({argument})"
+        if len(before) + len(text) + len(after) <= LINE_LENGTH:
+            return text
+        indent = first[: len(first) - len(first.lstrip())]
+        inner = indent + "    "
+        if len(inner) + len(argument) <= LINE_LENGTH or not listed:
+            return f"{function}(\n{inner}{argument}\n{indent})"
+        items = "".join(f"{inner}    {name},\n" for name in names)
+        return f"{function}(\n{inner}[\n{items}{inner}]\n{indent})"
 
     def name_text(self, call: ast.Call, found: Found) -> str:
         """The declared name as source: a string literal, or for a name built from a
@@ -444,7 +470,8 @@ _MESSAGES = ("ParameterDescriptor", "FloatingPointRange", "IntegerRange")
 
 
 def _drop_unused_descriptors(text: str) -> str:
-    """``desc = ParameterDescriptor(...)`` (and ``desc.x = ...``) whose declaration went."""
+    """``desc = ParameterDescriptor(...)`` (and ``desc.x = ...``) whose declaration went,
+    and ``names = {...}`` of the keys under a prefix in the overrides whose loop went."""
     try:
         tree = ast.parse(text)
     except SyntaxError:
@@ -474,8 +501,10 @@ def _drop_unused_descriptors(text: str) -> str:
             if (
                 isinstance(target, ast.Name)
                 and target.id not in loaded
-                and isinstance(value, ast.Call)
-                and _called(value) in _MESSAGES
+                and (
+                    (isinstance(value, ast.Call) and _called(value) in _MESSAGES)
+                    or reads_overrides(value)
+                )
             ):
                 for dropped in [statement, *_sets_of(target.id, setters.values())]:
                     span = source.line_span(dropped)
