@@ -20,7 +20,7 @@ import re
 from dataclasses import dataclass, field
 from typing import Any
 
-from genparams.rclpy_import.features import kept_by_the_node, what_it_needs
+from genparams.rclpy_import.features import AUTOMATIC, kept_by_the_node, what_it_needs
 from genparams.rclpy_import.scan import Found, Unit, descriptor_of
 from genparams.rclpy_import.values import DescriptorValue, RangeValue, TypeMarker, unparsed
 from genparams.runtime.core.naming import ENTRY_KEY, NODE_PARAMETERS, SCHEMA_NAME, is_ros_name
@@ -86,6 +86,9 @@ class Imported:
     # for_each leaf (``offsets``, or ``*`` at the top level), a mapped group's parameter's
     # its place with ``*`` for the entry (``gains.*.p``, ``*.p`` at the top level)
     keys: dict[int, str] = field(default_factory=dict)
+    # the node declares what its overrides name, and the schema every parameter it reads:
+    # the patch takes the option out
+    replaces_automatic: bool = False
 
     def count(self, outcome: str) -> int:
         return sum(1 for _, o in self.outcome if o == outcome)
@@ -128,12 +131,21 @@ class _Converter:
         for found in self.unit.found:
             self.imported.outcome.append((found, self.declaration(found)))
         self.keep_groups_whole()
-        read_by_loops = {id(f.loop_source) for f in self.unit.found if f.loop_source is not None}
+        automatic = any(o.option == AUTOMATIC for o in self.unit.options)
+        reads = [r for r in self.unit.reads if automatic and not self.declared(r)]
+        for read in reads:
+            self.imported.outcome.append((read, self.declaration(read)))
+        every_read = bool(reads) and all(
+            o != LEFT_OUT for f, o in self.imported.outcome[-len(reads) :]
+        )
+        self.imported.replaces_automatic = every_read
+        used = [*self.unit.found, *reads]
+        read_by_loops = {id(f.loop_source) for f in used if f.loop_source is not None}
         for option in self.unit.options:
             if id(option.at) in read_by_loops:
                 continue  # the keys of an open group: its declarations say the rest
-            if kept_by_the_node(option):
-                self.note(option.at, "", what_it_needs(option))
+            if kept_by_the_node(option, every_read):
+                self.note(option.at, "", what_it_needs(option, every_read))
             else:
                 self.warn(option.at, "", what_it_needs(option))
         for change in self.unit.afterwards:
@@ -145,6 +157,13 @@ class _Converter:
         self.imported.data = data
         return self.imported
 
+    def declared(self, read: Found) -> bool:
+        """Whether a read is of a parameter the schema holds already."""
+        if read.name.problem is None:
+            return read.name.value in self.first
+        place = item_place(read)
+        return place is not None and place.key in self.first
+
     def keep_groups_whole(self) -> None:
         """One statement declaring several parameters (a loop over literal items, a
         declare_parameters list whose result is used) stays in the node whole when any
@@ -152,6 +171,8 @@ class _Converter:
         them twice."""
         groups: dict[int, list[int]] = {}
         for index, (found, _) in enumerate(self.imported.outcome):
+            if found.read is not None:
+                continue  # reads stay in the node
             if found.literal_loop is not None:
                 groups.setdefault(id(found.literal_loop), []).append(index)
             elif found.in_list and not (
@@ -248,6 +269,10 @@ class _Converter:
             self.warn(at, name, f"a default computed from the item ({unparsed(found.value_node)}): "
                       "one schema default serves every entry: imported with none, so each "
                       "entry must be given a value")  # fmt: skip
+            exact = False
+        if found.read == "":
+            self.warn(at, name, "read with .value, the params file deciding its type: imported "
+                      "as type: any (state its type in the schema)")  # fmt: skip
             exact = False
         if schema_type == "byte_array":
             self.note(
@@ -570,6 +595,8 @@ _CONDITION_TYPES = ("bool", "int", "double", "string")
 
 def _typed_leaf(found: Found) -> tuple[dict[str, Any] | None, str]:
     """The leaf's type, and its default or ``optional``, as rclpy would declare it."""
+    if found.read is not None:  # a parameter the node reads: it must be given
+        return {"type": found.read or "any"}, ""
     descriptor = descriptor_of(found)
     value = found.value.value
     if found.value.problem is not None and found.item_value is not None:

@@ -16,17 +16,25 @@ AUTOMATIC = "automatically_declare_parameters_from_overrides"
 _LOOP = "a loop over the keys found under a prefix"
 
 
-def kept_by_the_node(found: NodeOption) -> bool:
-    """Whether the node keeps the construct as it is, the schema being exact without it."""
-    return found.option == ALLOW_UNDECLARED
+def kept_by_the_node(found: NodeOption, every_read: bool = False) -> bool:
+    """Whether the schema is exact without the construct: the node keeps
+    ``allow_undeclared_parameters``; ``automatically_declare_parameters_from_overrides``
+    goes when the schema holds ``every_read`` parameter the node reads."""
+    return found.option == ALLOW_UNDECLARED or (found.option == AUTOMATIC and every_read)
 
 
-def what_it_needs(found: NodeOption) -> str:
+def what_it_needs(found: NodeOption, every_read: bool = False) -> str:
     """Why the construct is not in the schema, and what of it would be."""
     if found.option == ALLOW_UNDECLARED:
         return (
             f"{found.construct}: the node keeps it (sets of parameters no one declared "
             "still succeed); the schema holds the parameters it declares"
+        )
+    if found.option == AUTOMATIC and every_read:
+        return (
+            f"{found.construct}: the schema declares every parameter the node reads, each "
+            "required, and the patch takes the option out: names of the params file the "
+            "node never reads are no longer declared"
         )
     if found.option == AUTOMATIC:
         return (

@@ -25,6 +25,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from genparams.rclpy_import.convert import LEFT_OUT, item_place
+from genparams.rclpy_import.features import AUTOMATIC
 from genparams.rclpy_import.node_file import ImportedNode
 from genparams.rclpy_import.overrides import reads_overrides
 from genparams.rclpy_import.scan import DECLARE_ONE, Found
@@ -117,23 +118,63 @@ class _Patcher:
 
     def run(self) -> str:
         patchable = self.patchable()
-        if not patchable:
-            return self.node.source
-        first = min(patchable, key=lambda s: (s.lineno, s.col_offset))
-        removed_first = False
-        for statement, founds in patchable.items():
-            removed = self.rewrite(statement, founds)
-            if statement is first:
-                removed_first = removed
+        automatic = self.automatic_option()
         declare = f"self.{self.attribute} = {self.class_name}.declare(self)"
-        self.place_declare(first, declare, removed_first)
-        self.fill_emptied(first if removed_first else None)
+        if automatic is not None:
+            self.drop_keyword(automatic)
+            if not patchable:  # the node only reads: declare once the node is built
+                statement = self.statement_of(automatic)
+                at = self.source.starts[statement.end_lineno or statement.lineno]
+                self.edits.append(_Edit(at, at, f"{self.source.indent(statement)}{declare}\n"))
+        elif not patchable:
+            return self.node.source
+        if patchable:
+            first = min(patchable, key=lambda s: (s.lineno, s.col_offset))
+            removed_first = False
+            for statement, founds in patchable.items():
+                removed = self.rewrite(statement, founds)
+                if statement is first:
+                    removed_first = removed
+            self.place_declare(first, declare, removed_first)
+            self.fill_emptied(first if removed_first else None)
         self.rewrite_reads()
         self.add_import()
         text = _apply(self.node.source, self.edits)
         for _ in range(3):  # a descriptor may use a range variable
             text = _drop_unused_descriptors(text)
         return _drop_unused_imports(self.node.source, text)
+
+    def automatic_option(self) -> ast.keyword | None:
+        """``automatically_declare_parameters_from_overrides=True`` in the class, when the
+        schema declares every parameter the node reads (it goes: genparams declares)."""
+        if not self.node.imported.replaces_automatic:
+            return None
+        for option in self.node.unit.options:
+            if option.option == AUTOMATIC and isinstance(option.at, ast.keyword):
+                if option.at in self.parents:
+                    return option.at
+        return None
+
+    def statement_of(self, node: ast.AST) -> ast.stmt:
+        while not isinstance(node, ast.stmt):
+            node = self.parents[node]
+        return node
+
+    def drop_keyword(self, keyword: ast.keyword) -> None:
+        """Take ``keyword`` out of its call, with the comma before it (or after it)."""
+        call = self.parents[keyword]
+        assert isinstance(call, ast.Call)
+        arguments: list[ast.AST] = sorted(
+            [*call.args, *call.keywords],
+            key=lambda n: (n.lineno, n.col_offset),  # type: ignore[attr-defined]
+        )
+        index = arguments.index(keyword)
+        start, end = self.source.span(keyword)
+        if index > 0:
+            start = self.source.span(arguments[index - 1])[1]
+        elif index + 1 < len(arguments):
+            end = self.source.span(arguments[index + 1])[0]
+        self.edits.append(_Edit(start, end, ""))
 
     def patchable(self) -> dict[ast.stmt, list[Found]]:
         """Statements to rewrite (declaring statements, or loops over literal items), each
@@ -143,6 +184,8 @@ class _Patcher:
             outcomes.setdefault(id(found.statement), []).append(outcome)
         groups: dict[ast.stmt, list[tuple[Found, str]]] = {}
         for found, outcome in self.node.imported.outcome:
+            if found.read is not None:
+                continue  # a read stays: genparams declared the parameter it reads
             statement: ast.stmt = (
                 found.literal_loop or self.enclosing(found, outcomes) or found.statement
             )

@@ -82,6 +82,9 @@ class Found:
     # item: its type is the parameter's.
     item_value: Piece | None = None
     value_node: ast.expr | None = None  # the value, as written
+    # A read (``self.get_parameter(name)``) rather than a declaration: the schema type its
+    # accessor names (``.get_parameter_value().string_value``: "string"), "" for ``.value``.
+    read: str | None = None
 
     @property
     def receiver_is_self(self) -> bool:
@@ -110,6 +113,7 @@ class Unit:
     found: list[Found] = field(default_factory=list)
     options: list[NodeOption] = field(default_factory=list)
     afterwards: list[NodeOption] = field(default_factory=list)  # see AFTERWARDS
+    reads: list[Found] = field(default_factory=list)  # self.get_parameter(name) calls
 
 
 def declares(node: ast.AST) -> bool:
@@ -310,9 +314,24 @@ class _Scanner:
         self, root: ast.AST, statement: ast.stmt, scope: Scope, context: _Context
     ) -> None:
         self.reads_of_overrides(root, calls=False)
+        parents: dict[ast.AST, ast.AST] | None = None
         for call, nested in _calls(root, None):
             inner = _replace(context, nested=context.nested or nested)
             self.call(call, statement, scope, inner)
+            if _reads_one(call):
+                if parents is None:
+                    parents = {c: p for p in ast.walk(root) for c in ast.iter_child_nodes(p)}
+                self.read(call, statement, scope, inner, _accessor(call, parents))
+
+    def read(
+        self, call: ast.Call, statement: ast.stmt, scope: Scope, context: _Context, kind: str
+    ) -> None:
+        """``self.get_parameter(name)``: a parameter the node needs, on a node declaring
+        what the overrides name."""
+        name = call.args[0]
+        pieces = [_piece(name, scope), Piece(), Piece()]
+        found = self.add(call, name, statement, pieces, Piece(), context, name, self.unit.reads)
+        found.read = kind
 
     def call(self, call: ast.Call, statement: ast.stmt, scope: Scope, context: _Context) -> None:
         for keyword in call.keywords:
@@ -413,7 +432,9 @@ class _Scanner:
         ignore: Piece,
         context: _Context,
         name_node: ast.AST | None,
+        into: list[Found] | None = None,
     ) -> Found:
+        """A declaration (or a read) found, in ``into`` (the unit's declarations)."""
         name, value, descriptor = pieces[:3]
         found = Found(
             call,
@@ -435,7 +456,7 @@ class _Scanner:
             loop_prefix=context.loop_prefix,
             loop_source=context.loop_source,
         )
-        self.unit.found.append(found)
+        (self.unit.found if into is None else into).append(found)
         return found
 
 
@@ -598,6 +619,48 @@ def _joined(namespace: Piece, name: Piece) -> Piece:
     if not isinstance(namespace.value, str) or not isinstance(name.value, str):
         return name
     return Piece(True, f"{namespace.value}.{name.value}")
+
+
+_ACCESSORS = {
+    "bool_value": "bool",
+    "integer_value": "int",
+    "double_value": "double",
+    "string_value": "string",
+    "byte_array_value": "byte_array",
+    "bool_array_value": "bool_array",
+    "integer_array_value": "int_array",
+    "double_array_value": "double_array",
+    "string_array_value": "string_array",
+}
+
+
+def _reads_one(call: ast.Call) -> bool:
+    """``self.get_parameter(name)``."""
+    func = call.func
+    return (
+        isinstance(func, ast.Attribute)
+        and func.attr == "get_parameter"
+        and isinstance(func.value, ast.Name)
+        and func.value.id == "self"
+        and len(call.args) == 1
+        and not call.keywords
+    )
+
+
+def _accessor(call: ast.Call, parents: dict[ast.AST, ast.AST]) -> str:
+    """The schema type ``<call>.get_parameter_value().string_value`` names; "" for any
+    other use (``.value``)."""
+    method = parents.get(call)
+    value_call = parents.get(method) if method is not None else None
+    outer = parents.get(value_call) if value_call is not None else None
+    if (
+        isinstance(method, ast.Attribute)
+        and method.attr == "get_parameter_value"
+        and isinstance(value_call, ast.Call)
+        and isinstance(outer, ast.Attribute)
+    ):
+        return _ACCESSORS.get(outer.attr, "")
+    return ""
 
 
 SAMPLE_ITEM = "item"  # a loop's item, to type a value computed from it

@@ -32,6 +32,7 @@ class Case:
 CASES = [
     Case("arm_controller", "arm_controller.py", None, 0),
     Case("camera_driver", "camera_driver.py", None, 0),
+    Case("fleet_monitor", "fleet_monitor.py", None, 1, params="fleet_monitor.params.yaml"),
     Case("key_teleop", "key_teleop.py", None, 0),
     Case("legacy_bridge", "legacy_bridge.py", None, 1),
     Case("planner", "planner.py", None, 0),
@@ -42,6 +43,7 @@ CASES = [
 CLASSES = {
     "arm_controller": "ArmControllerNode",
     "camera_driver": "CameraDriverNode",
+    "fleet_monitor": "FleetMonitor",
     "key_teleop": "KeyTeleop",
     "legacy_bridge": "LegacyBridge",
     "planner": "PlannerNode",
