@@ -20,9 +20,9 @@ import re
 from dataclasses import dataclass, field
 from typing import Any
 
-from genparams.rclpy_import.features import awaiting_feature
+from genparams.rclpy_import.features import AUTOMATIC, kept_by_the_node, what_it_needs
 from genparams.rclpy_import.scan import Found, Unit, descriptor_of
-from genparams.rclpy_import.values import DescriptorValue, RangeValue, TypeMarker
+from genparams.rclpy_import.values import DescriptorValue, RangeValue, TypeMarker, unparsed
 from genparams.runtime.core.naming import ENTRY_KEY, NODE_PARAMETERS, SCHEMA_NAME, is_ros_name
 from genparams.runtime.core.types import INT64_MAX, INT64_MIN
 from genparams.schema.errors import Location, SchemaProblem
@@ -33,13 +33,18 @@ LEFT_OUT = "left out"
 FOR_EACH = "for_each"
 
 
+OVERRIDES_KEYS = "overrides"  # the for_each of an open group
+
+
 @dataclass(frozen=True)
 class ItemPlace:
     """Where the item sits in a name built from a loop's item: the text before it and
-    after it (``f"gains.{joint}.p"``: ``gains`` and ``p``; ``joint`` alone: both empty)."""
+    after it (``f"gains.{joint}.p"``: ``gains`` and ``p``; ``joint`` alone: both empty).
+    ``open`` when the items are the keys found under ``head`` in the overrides."""
 
     head: str
     tail: str
+    open: bool = False
 
     @property
     def group(self) -> str:
@@ -56,6 +61,8 @@ class ItemPlace:
 
     @property
     def what(self) -> str:
+        if self.open:
+            return "a parameter of an open group"
         return "a parameter of a mapped group" if self.tail else "a per-item parameter"
 
     def names(self) -> str:
@@ -79,13 +86,21 @@ class Imported:
     # for_each leaf (``offsets``, or ``*`` at the top level), a mapped group's parameter's
     # its place with ``*`` for the entry (``gains.*.p``, ``*.p`` at the top level)
     keys: dict[int, str] = field(default_factory=dict)
+    # the node declares what its overrides name, and the schema every parameter it reads:
+    # the patch takes the option out
+    replaces_automatic: bool = False
 
     def count(self, outcome: str) -> int:
         return sum(1 for _, o in self.outcome if o == outcome)
 
     @property
     def imported_names(self) -> set[str]:
-        return {f.name.value for f, o in self.outcome if o != LEFT_OUT and f.name.problem is None}
+        """The names of the imported declarations; a per-item one's its schema key."""
+        return {
+            f.name.value if f.name.problem is None else self.keys[id(f)]
+            for f, o in self.outcome
+            if o != LEFT_OUT
+        }
 
 
 def schema_name(unit_name: str, file_stem: str) -> str:
@@ -113,19 +128,41 @@ class _Converter:
         self.groups: dict[str, str] = {}  # each mapped group's schema key: its key list
 
     def run(self) -> Imported:
-        for option in self.unit.options:
-            self.warn(option.at, "", awaiting_feature(option))
-        for change in self.unit.afterwards:
-            self.warn(change.at, "", f"{change.construct}: the schema keeps the declared one")
         for found in self.unit.found:
             self.imported.outcome.append((found, self.declaration(found)))
         self.keep_groups_whole()
+        automatic = any(o.option == AUTOMATIC for o in self.unit.options)
+        reads = [r for r in self.unit.reads if automatic and not self.declared(r)]
+        for read in reads:
+            self.imported.outcome.append((read, self.declaration(read)))
+        every_read = bool(reads) and all(
+            o != LEFT_OUT for f, o in self.imported.outcome[-len(reads) :]
+        )
+        self.imported.replaces_automatic = every_read
+        used = [*self.unit.found, *reads]
+        read_by_loops = {id(f.loop_source) for f in used if f.loop_source is not None}
+        for option in self.unit.options:
+            if id(option.at) in read_by_loops:
+                continue  # the keys of an open group: its declarations say the rest
+            if kept_by_the_node(option, every_read):
+                self.note(option.at, "", what_it_needs(option, every_read))
+            else:
+                self.warn(option.at, "", what_it_needs(option))
+        for change in self.unit.afterwards:
+            self.warn(change.at, "", f"{change.construct}: the schema keeps the declared one")
         data: dict[str, Any] = {"genparams": 1, "name": self.imported.name}
         if self.unit.docstring:
             data["description"] = " ".join(self.unit.docstring.strip().split("\n\n")[0].split())
         data["parameters"] = self.tree
         self.imported.data = data
         return self.imported
+
+    def declared(self, read: Found) -> bool:
+        """Whether a read is of a parameter the schema holds already."""
+        if read.name.problem is None:
+            return read.name.value in self.first
+        place = item_place(read)
+        return place is not None and place.key in self.first
 
     def keep_groups_whole(self) -> None:
         """One statement declaring several parameters (a loop over literal items, a
@@ -134,6 +171,8 @@ class _Converter:
         them twice."""
         groups: dict[int, list[int]] = {}
         for index, (found, _) in enumerate(self.imported.outcome):
+            if found.read is not None:
+                continue  # reads stay in the node
             if found.literal_loop is not None:
                 groups.setdefault(id(found.literal_loop), []).append(index)
             elif found.in_list and not (
@@ -201,13 +240,13 @@ class _Converter:
                 self.warn(at, name, f"declared only under a condition ({found.condition}): "
                           f"{reason}: parameter left out")  # fmt: skip
                 return LEFT_OUT
-        if found.value.problem is not None:
+        from_item = place is not None and place.tail and _computed_from_item(found)
+        if found.value.problem is not None and not from_item:
             self.warn(at, name, f"value computed at run time ({found.value.problem.what}): "
                       "parameter left out")  # fmt: skip
             return LEFT_OUT
         if place is not None and place.tail:
-            assert found.loop_parameter is not None
-            problem = self.entry_problem(place, found.loop_parameter)
+            problem = self.entry_problem(place, _key_list(found))
         else:
             problem = self.name_problem(name)
         if problem is not None:
@@ -223,16 +262,28 @@ class _Converter:
                       f"{place.what} needs one: parameter left out")  # fmt: skip
             return LEFT_OUT
         schema_type = leaf["type"]
+        exact = True
+        if from_item:
+            assert found.value_node is not None
+            del leaf["default"]
+            self.warn(at, name, f"a default computed from the item ({unparsed(found.value_node)}): "
+                      "one schema default serves every entry: imported with none, so each "
+                      "entry must be given a value")  # fmt: skip
+            exact = False
+        if found.read == "":
+            self.warn(at, name, "read with .value, the params file deciding its type: imported "
+                      "as type: any (state its type in the schema)")  # fmt: skip
+            exact = False
         if schema_type == "byte_array":
             self.note(
                 at, name, "an empty list: rclpy declares a byte_array, and so does the schema"
             )
-        exact = self.descriptor(found, name, schema_type, leaf)
+        exact = self.descriptor(found, name, schema_type, leaf) and exact
         if found.ignore_override.problem is not None or found.ignore_override.value:
             self.warn(at, name, "ignore_override: genparams always applies overrides: imported "
                       "without it")  # fmt: skip
             exact = False
-        if place is not None:
+        if place is not None and not place.open:
             key = found.loop_parameter
             assert key is not None
             if not place.tail:
@@ -246,8 +297,7 @@ class _Converter:
         if when is not None:
             leaf["when"] = when
         if place is not None and place.tail:
-            assert found.loop_parameter is not None
-            self.place_entry(place, found.loop_parameter, leaf)
+            self.place_entry(place, _key_list(found), leaf)
         else:
             self.place(name, leaf)
         self.first[name] = found
@@ -273,6 +323,8 @@ class _Converter:
                 f"{computed}: only a name holding the item as one whole part between dots "
                 "translates"
             )
+        if place.open:
+            return self.open_entry(found, place, computed)
         key = found.loop_parameter
         target = self.first.get(key) if key is not None else None
         leaf = self.leaf(key) if key is not None and target is not None else None
@@ -291,6 +343,28 @@ class _Converter:
             return None, f"{computed}, under a condition: {place.what} has no when"
         if found.in_list and not place.tail:
             return None, f"{computed}, in a declare_parameters list"
+        return place, ""
+
+    def open_entry(
+        self, found: Found, place: ItemPlace, computed: str
+    ) -> tuple[ItemPlace | None, str]:
+        """A declaration in a loop over the keys found under a prefix in the overrides:
+        a parameter of an open group when it is named ``<prefix>.<key>.<field>``."""
+        prefix = found.loop_prefix
+        under = f"one entry per key found under {prefix!r} in the overrides"
+        if not place.tail:
+            return None, (
+                f"{computed}: one value per key found under {prefix!r} in the overrides: an "
+                f"open group holds parameters of each key ({prefix}.<key>.<field>)"
+            )
+        if place.head != prefix:
+            return None, (
+                f"{computed}: the keys are found under {prefix!r} in the overrides, the name "
+                f"puts them under {place.head or 'the top level'!r}: an open group holds "
+                f"{under}, under {prefix!r} itself"
+            )
+        if found.condition is not None:
+            return None, f"{computed}, under a condition: {place.what} has no when"
         return place, ""
 
     def when(self, found: Found) -> tuple[dict[str, Any] | None, str]:
@@ -336,7 +410,7 @@ class _Converter:
             space = ".".join(parts[:index])
             if space in self.groups:
                 return (
-                    f"{_where(space)} holds one entry per item of {self.groups[space]!r}: "
+                    f"{_where(space)} holds {_entries_of(self.groups[space])}: "
                     "a parameter of its own cannot sit in it"
                 )
         for index in range(1, len(parts)):
@@ -358,7 +432,7 @@ class _Converter:
         group = place.group
         owner = self.groups.get(group)
         if owner is not None and owner != key_list:
-            return f"{_where(group)} already holds one entry per item of {owner!r}"
+            return f"{_where(group)} already holds {_entries_of(owner)}"
         if owner is None:
             outer = place.head.split(".") if place.head else []
             for index in range(1, len(outer)):
@@ -367,7 +441,7 @@ class _Converter:
                     return f"{space!r} is a parameter, not a namespace"
                 if space in self.groups:
                     return (
-                        f"{space!r} holds one entry per item of {self.groups[space]!r}: a "
+                        f"{space!r} holds {_entries_of(self.groups[space])}: a "
                         "mapped group inside it is not written by the import"
                     )
             if group in self.first:
@@ -521,8 +595,12 @@ _CONDITION_TYPES = ("bool", "int", "double", "string")
 
 def _typed_leaf(found: Found) -> tuple[dict[str, Any] | None, str]:
     """The leaf's type, and its default or ``optional``, as rclpy would declare it."""
+    if found.read is not None:  # a parameter the node reads: it must be given
+        return {"type": found.read or "any"}, ""
     descriptor = descriptor_of(found)
     value = found.value.value
+    if found.value.problem is not None and found.item_value is not None:
+        value = found.item_value.value  # for a sample item: typed, never kept
     dynamic = descriptor is not None and bool(descriptor.fields.get("dynamic_typing"))
     if isinstance(value, TypeMarker):
         if value.schema_type == "not_set":
@@ -544,6 +622,26 @@ def _typed_leaf(found: Found) -> tuple[dict[str, Any] | None, str]:
     if schema_type is None:
         return None, problem
     return {"type": schema_type, "default": _default(value)}, ""
+
+
+def _key_list(found: Found) -> str:
+    """What keys the mapped group of a per-item declaration: its key list, or the
+    overrides."""
+    if found.loop_prefix is not None:
+        return OVERRIDES_KEYS
+    assert found.loop_parameter is not None
+    return found.loop_parameter
+
+
+def _entries_of(key_list: str) -> str:
+    if key_list == OVERRIDES_KEYS:
+        return "one entry per key given under it in the overrides"
+    return f"one entry per item of {key_list!r}"
+
+
+def _computed_from_item(found: Found) -> bool:
+    """A value computed from the loop's item that a sample item gives a value of."""
+    return found.item_value is not None and found.item_value.problem is None
 
 
 def _where(group: str) -> str:
@@ -572,7 +670,7 @@ def item_place(found: Found) -> ItemPlace | None:
     [("p", ...)])`` -> ("gains", "p"): where the loop's item sits in the name, when it is
     one whole part between dots and the name holds nothing else computed; else None."""
     variable = found.loop_variable
-    if variable is None or found.loop_parameter is None:
+    if variable is None or (found.loop_parameter is None and found.loop_prefix is None):
         return None
     parts = _name_parts(found.name_node)
     if parts is None:
@@ -597,7 +695,7 @@ def item_place(found: Found) -> ItemPlace | None:
         return None
     if tail and not (tail.startswith(".") and is_ros_name(tail[1:])):
         return None
-    return ItemPlace(head[:-1], tail[1:])
+    return ItemPlace(head[:-1], tail[1:], open=found.loop_prefix is not None)
 
 
 def _name_parts(node: ast.AST | None) -> list[str | None] | None:

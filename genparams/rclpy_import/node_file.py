@@ -8,7 +8,7 @@ from pathlib import Path
 
 from genparams.errors import GenparamsError
 from genparams.rclpy_import.convert import Imported, convert, schema_name
-from genparams.rclpy_import.features import awaiting_feature
+from genparams.rclpy_import.features import AUTOMATIC, what_it_needs
 from genparams.rclpy_import.scan import Unit, units
 
 
@@ -59,10 +59,11 @@ def import_node(source: str, file: str, class_name: str | None = None) -> Import
         )
     else:
         unit = found[0]
-    if not unit.found:
+    automatic = any(o.option == AUTOMATIC for o in unit.options)
+    if not unit.found and not (automatic and unit.reads):
         first = unit.options[0] if unit.options else None
         where = f"{first.at.lineno}:{first.at.col_offset + 1}" if first else "1:1"  # type: ignore[attr-defined]
-        why = f": {awaiting_feature(first)}" if first else ""
+        why = f": {what_it_needs(first)}" if first else ""
         raise NodeFileError(f"{file}:{where}: no parameter declaration found{why}")
     name = schema_name(unit.name, Path(file).stem)
     imported = convert(unit, file, source.splitlines(), name)

@@ -25,12 +25,15 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from genparams.rclpy_import.convert import LEFT_OUT, item_place
+from genparams.rclpy_import.features import AUTOMATIC
 from genparams.rclpy_import.node_file import ImportedNode
+from genparams.rclpy_import.overrides import reads_overrides
 from genparams.rclpy_import.scan import DECLARE_ONE, Found
 from genparams.rclpy_import.values import Evaluator, Scope, UntranslatableError
 from genparams.runtime.core.naming import attribute_parts, class_name, module_name
 
 _READ_ATTRIBUTES = ("value",)
+LINE_LENGTH = 100  # the longest line a rewritten call is written on (ruff's E501 at 100)
 
 
 @dataclass(frozen=True)
@@ -49,9 +52,12 @@ class _Source:
             self.starts.append(self.starts[-1] + len(line))
 
     def offset(self, line: int, byte_column: int) -> int:
+        return self.starts[line - 1] + self.column(line, byte_column)
+
+    def column(self, line: int, byte_column: int) -> int:
+        """The character column of a byte column (as ast gives it) on ``line``."""
         text = self.lines[line - 1] if line - 1 < len(self.lines) else ""
-        column = len(text.encode("utf-8")[:byte_column].decode("utf-8", errors="replace"))
-        return self.starts[line - 1] + column
+        return len(text.encode("utf-8")[:byte_column].decode("utf-8", errors="replace"))
 
     def span(self, node: ast.AST) -> tuple[int, int]:
         start = self.offset(node.lineno, node.col_offset)  # type: ignore[attr-defined]
@@ -112,23 +118,63 @@ class _Patcher:
 
     def run(self) -> str:
         patchable = self.patchable()
-        if not patchable:
-            return self.node.source
-        first = min(patchable, key=lambda s: (s.lineno, s.col_offset))
-        removed_first = False
-        for statement, founds in patchable.items():
-            removed = self.rewrite(statement, founds)
-            if statement is first:
-                removed_first = removed
+        automatic = self.automatic_option()
         declare = f"self.{self.attribute} = {self.class_name}.declare(self)"
-        self.place_declare(first, declare, removed_first)
-        self.fill_emptied(first if removed_first else None)
+        if automatic is not None:
+            self.drop_keyword(automatic)
+            if not patchable:  # the node only reads: declare once the node is built
+                statement = self.statement_of(automatic)
+                at = self.source.starts[statement.end_lineno or statement.lineno]
+                self.edits.append(_Edit(at, at, f"{self.source.indent(statement)}{declare}\n"))
+        elif not patchable:
+            return self.node.source
+        if patchable:
+            first = min(patchable, key=lambda s: (s.lineno, s.col_offset))
+            removed_first = False
+            for statement, founds in patchable.items():
+                removed = self.rewrite(statement, founds)
+                if statement is first:
+                    removed_first = removed
+            self.place_declare(first, declare, removed_first)
+            self.fill_emptied(first if removed_first else None)
         self.rewrite_reads()
         self.add_import()
         text = _apply(self.node.source, self.edits)
         for _ in range(3):  # a descriptor may use a range variable
             text = _drop_unused_descriptors(text)
         return _drop_unused_imports(self.node.source, text)
+
+    def automatic_option(self) -> ast.keyword | None:
+        """``automatically_declare_parameters_from_overrides=True`` in the class, when the
+        schema declares every parameter the node reads (it goes: genparams declares)."""
+        if not self.node.imported.replaces_automatic:
+            return None
+        for option in self.node.unit.options:
+            if option.option == AUTOMATIC and isinstance(option.at, ast.keyword):
+                if option.at in self.parents:
+                    return option.at
+        return None
+
+    def statement_of(self, node: ast.AST) -> ast.stmt:
+        while not isinstance(node, ast.stmt):
+            node = self.parents[node]
+        return node
+
+    def drop_keyword(self, keyword: ast.keyword) -> None:
+        """Take ``keyword`` out of its call, with the comma before it (or after it)."""
+        call = self.parents[keyword]
+        assert isinstance(call, ast.Call)
+        arguments: list[ast.AST] = sorted(
+            [*call.args, *call.keywords],
+            key=lambda n: (n.lineno, n.col_offset),  # type: ignore[attr-defined]
+        )
+        index = arguments.index(keyword)
+        start, end = self.source.span(keyword)
+        if index > 0:
+            start = self.source.span(arguments[index - 1])[1]
+        elif index + 1 < len(arguments):
+            end = self.source.span(arguments[index + 1])[0]
+        self.edits.append(_Edit(start, end, ""))
 
     def patchable(self) -> dict[ast.stmt, list[Found]]:
         """Statements to rewrite (declaring statements, or loops over literal items), each
@@ -138,6 +184,8 @@ class _Patcher:
             outcomes.setdefault(id(found.statement), []).append(outcome)
         groups: dict[ast.stmt, list[tuple[Found, str]]] = {}
         for found, outcome in self.node.imported.outcome:
+            if found.read is not None:
+                continue  # a read stays: genparams declared the parameter it reads
             statement: ast.stmt = (
                 found.literal_loop or self.enclosing(found, outcomes) or found.statement
             )
@@ -226,11 +274,32 @@ class _Patcher:
                 return
             start, end = self.source.span(call)
             quoted = self.name_text(call, founds[0])
-            self.edits.append(_Edit(start, end, f"self.get_parameter({quoted})"))
+            text = self.fitted(call, "self.get_parameter", [quoted], listed=False)
+            self.edits.append(_Edit(start, end, text))
             return
         start, end = self.source.span(call)
-        listed = ", ".join(self.name_text(call, found) for found in founds)
-        self.edits.append(_Edit(start, end, f"self.get_parameters([{listed}])"))
+        names = [self.name_text(call, found) for found in founds]
+        self.edits.append(_Edit(start, end, self.fitted(call, "self.get_parameters", names)))
+
+    def fitted(self, call: ast.Call, function: str, names: list[str], listed: bool = True) -> str:
+        """``function(names)`` in place of ``call``, written as ruff format would, so that
+        no line runs past LINE_LENGTH: on one line if the line fits, else the argument on
+        a line of its own, else one name a line."""
+        lines = self.source.lines
+        assert call.end_lineno is not None and call.end_col_offset is not None
+        first, last = lines[call.lineno - 1], lines[call.end_lineno - 1].rstrip("\r\n")
+        before = first[: self.source.column(call.lineno, call.col_offset)]
+        after = last[self.source.column(call.end_lineno, call.end_col_offset) :]
+        argument = f"[{', '.join(names)}]" if listed else names[0]
+        text = f"{function}({argument})"
+        if len(before) + len(text) + len(after) <= LINE_LENGTH:
+            return text
+        indent = first[: len(first) - len(first.lstrip())]
+        inner = indent + "    "
+        if len(inner) + len(argument) <= LINE_LENGTH or not listed:
+            return f"{function}(\n{inner}{argument}\n{indent})"
+        items = "".join(f"{inner}    {name},\n" for name in names)
+        return f"{function}(\n{inner}[\n{items}{inner}]\n{indent})"
 
     def name_text(self, call: ast.Call, found: Found) -> str:
         """The declared name as source: a string literal, or for a name built from a
@@ -444,7 +513,8 @@ _MESSAGES = ("ParameterDescriptor", "FloatingPointRange", "IntegerRange")
 
 
 def _drop_unused_descriptors(text: str) -> str:
-    """``desc = ParameterDescriptor(...)`` (and ``desc.x = ...``) whose declaration went."""
+    """``desc = ParameterDescriptor(...)`` (and ``desc.x = ...``) whose declaration went,
+    and ``names = {...}`` of the keys under a prefix in the overrides whose loop went."""
     try:
         tree = ast.parse(text)
     except SyntaxError:
@@ -474,8 +544,10 @@ def _drop_unused_descriptors(text: str) -> str:
             if (
                 isinstance(target, ast.Name)
                 and target.id not in loaded
-                and isinstance(value, ast.Call)
-                and _called(value) in _MESSAGES
+                and (
+                    (isinstance(value, ast.Call) and _called(value) in _MESSAGES)
+                    or reads_overrides(value)
+                )
             ):
                 for dropped in [statement, *_sets_of(target.id, setters.values())]:
                     span = source.line_span(dropped)

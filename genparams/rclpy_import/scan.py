@@ -16,12 +16,13 @@ from collections.abc import Iterator
 from dataclasses import dataclass, field, replace
 from typing import Any
 
+from genparams.rclpy_import.overrides import BY_PREFIX, OVERRIDES, keys_under
 from genparams.rclpy_import.values import (
     DescriptorValue,
     Evaluator,
     Scope,
     UntranslatableError,
-    dotted_name,
+    assigned_once_before,
     unparsed,
 )
 
@@ -29,7 +30,6 @@ DECLARE_ONE = "declare_parameter"
 DECLARE_MANY = "declare_parameters"
 # Node(...) options and calls that make parameters whose names come from params files.
 OPEN_OPTIONS = ("automatically_declare_parameters_from_overrides", "allow_undeclared_parameters")
-BY_PREFIX = "get_parameters_by_prefix"
 # Calls that change declared parameters after the fact: the schema cannot follow them.
 AFTERWARDS = {
     "set_descriptor": "set_descriptor() changes a descriptor after its declaration",
@@ -73,6 +73,18 @@ class Found:
     # (``==`` or ``in``) and the declaration sits in its body: the parameter and the
     # values that declare it.
     when: tuple[str, list[Any]] | None = None
+    # The loop read at run time, when it is the only one and runs over the keys found under
+    # a prefix in the overrides (see overrides.py): that prefix, and the by-prefix call or
+    # ``_parameter_overrides`` attribute the keys come from.
+    loop_prefix: str | None = None
+    loop_source: ast.AST | None = None
+    # A value computed from the loop's item (``sensor + "_link"``), worked out for a sample
+    # item: its type is the parameter's.
+    item_value: Piece | None = None
+    value_node: ast.expr | None = None  # the value, as written
+    # A read (``self.get_parameter(name)``) rather than a declaration: the schema type its
+    # accessor names (``.get_parameter_value().string_value``: "string"), "" for ``.value``.
+    read: str | None = None
 
     @property
     def receiver_is_self(self) -> bool:
@@ -90,6 +102,7 @@ class NodeOption:
 
     at: ast.AST
     construct: str
+    option: str = ""  # the Node() option (see OPEN_OPTIONS), or "" for a read of overrides
 
 
 @dataclass
@@ -100,6 +113,7 @@ class Unit:
     found: list[Found] = field(default_factory=list)
     options: list[NodeOption] = field(default_factory=list)
     afterwards: list[NodeOption] = field(default_factory=list)  # see AFTERWARDS
+    reads: list[Found] = field(default_factory=list)  # self.get_parameter(name) calls
 
 
 def declares(node: ast.AST) -> bool:
@@ -115,7 +129,7 @@ def opens(node: ast.AST) -> bool:
     """Whether ``node`` lets params files name parameters (see OPEN_OPTIONS, BY_PREFIX)."""
     return any(
         (isinstance(n, ast.keyword) and n.arg in OPEN_OPTIONS)
-        or (isinstance(n, ast.Attribute) and n.attr == BY_PREFIX)
+        or (isinstance(n, ast.Attribute) and n.attr in (BY_PREFIX, OVERRIDES))
         for n in ast.walk(node)
     )
 
@@ -192,6 +206,8 @@ class _Context:
     loop_parameter: str | None = None
     loop_variable: str | None = None
     when: tuple[str, list[Any]] | None = None
+    loop_prefix: str | None = None
+    loop_source: ast.AST | None = None
 
 
 class _Scanner:
@@ -218,7 +234,10 @@ class _Scanner:
             self.loop(statement, scope, context)
         elif isinstance(statement, ast.While):
             inner = _replace(
-                context, runtime_loop=context.runtime_loop or "a while loop", loop_parameter=None
+                context,
+                runtime_loop=context.runtime_loop or "a while loop",
+                loop_parameter=None,
+                loop_prefix=None,
             )
             self.walk(statement.body, scope, inner)
             self.walk(statement.orelse, scope, context)
@@ -273,8 +292,10 @@ class _Scanner:
                 assert binding is not None
                 self.walk(loop.body, scope.with_loop(binding), inner)
         else:
+            self.reads_of_overrides(loop.iter)
             targets = frozenset(n.id for n in ast.walk(loop.target) if isinstance(n, ast.Name))
             first = context.runtime_loop is None and isinstance(loop.target, ast.Name)
+            keys = keys_under(loop.iter, scope) if first else None
             inner = _replace(
                 context,
                 runtime_loop=context.runtime_loop or unparsed(loop.iter),
@@ -283,6 +304,8 @@ class _Scanner:
                 loop_variable=loop.target.id
                 if first and isinstance(loop.target, ast.Name)
                 else None,
+                loop_prefix=keys.prefix if keys is not None else None,
+                loop_source=keys.source if keys is not None else None,
             )
             self.walk(loop.body, scope, inner)
         self.walk(loop.orelse, scope, context)
@@ -290,9 +313,25 @@ class _Scanner:
     def expressions(
         self, root: ast.AST, statement: ast.stmt, scope: Scope, context: _Context
     ) -> None:
+        self.reads_of_overrides(root, calls=False)
+        parents: dict[ast.AST, ast.AST] | None = None
         for call, nested in _calls(root, None):
             inner = _replace(context, nested=context.nested or nested)
             self.call(call, statement, scope, inner)
+            if _reads_one(call):
+                if parents is None:
+                    parents = {c: p for p in ast.walk(root) for c in ast.iter_child_nodes(p)}
+                self.read(call, statement, scope, inner, _accessor(call, parents))
+
+    def read(
+        self, call: ast.Call, statement: ast.stmt, scope: Scope, context: _Context, kind: str
+    ) -> None:
+        """``self.get_parameter(name)``: a parameter the node needs, on a node declaring
+        what the overrides name."""
+        name = call.args[0]
+        pieces = [_piece(name, scope), Piece(), Piece()]
+        found = self.add(call, name, statement, pieces, Piece(), context, name, self.unit.reads)
+        found.read = kind
 
     def call(self, call: ast.Call, statement: ast.stmt, scope: Scope, context: _Context) -> None:
         for keyword in call.keywords:
@@ -302,7 +341,8 @@ class _Scanner:
                 except UntranslatableError:
                     on = True
                 if on:
-                    self.unit.options.append(NodeOption(keyword, f"{keyword.arg}=True"))
+                    option = NodeOption(keyword, f"{keyword.arg}=True", keyword.arg)
+                    self.unit.options.append(option)
         if not isinstance(call.func, ast.Attribute):
             return
         if call.func.attr == BY_PREFIX:
@@ -314,13 +354,27 @@ class _Scanner:
         elif call.func.attr == DECLARE_MANY:
             self.declare_many(call, statement, scope, context)
 
+    def reads_of_overrides(self, root: ast.AST, calls: bool = True) -> None:
+        """``self._parameter_overrides`` (and, with ``calls``, by-prefix calls) under
+        ``root``, outside the calls ``expressions`` visits."""
+        for node in ast.walk(root):
+            if isinstance(node, ast.Attribute) and node.attr == OVERRIDES:
+                self.unit.options.append(NodeOption(node, f"{unparsed(node)}"))
+            elif (
+                calls
+                and isinstance(node, ast.Call)
+                and isinstance(node.func, ast.Attribute)
+                and node.func.attr == BY_PREFIX
+            ):
+                self.unit.options.append(NodeOption(node, f"{BY_PREFIX}()"))
+
     def declare_one(
         self, call: ast.Call, statement: ast.stmt, scope: Scope, context: _Context
     ) -> None:
         args = _arguments(call, ("name", "value", "descriptor", "ignore_override"))
         name_node = args.get("name")
         pieces = [_piece(args.get(key), scope) for key in ("name", "value", "descriptor")]
-        self.add(
+        found = self.add(
             call,
             name_node if name_node is not None else call,
             statement,
@@ -329,6 +383,8 @@ class _Scanner:
             context,
             name_node,
         )
+        found.value_node = args.get("value")
+        found.item_value = _item_value(found, scope)
 
     def declare_many(
         self, call: ast.Call, statement: ast.stmt, scope: Scope, context: _Context
@@ -338,12 +394,15 @@ class _Scanner:
         ignore = _piece(args.get("ignore_override"), scope)
         listed = args.get("parameters")
         items: list[tuple[ast.AST, list[Piece], ast.AST | None]] = []
+        values: dict[int, ast.expr] = {}  # each item's value, as written
         if isinstance(listed, (ast.List, ast.Tuple)):
             for element in listed.elts:
                 if isinstance(element, ast.Tuple):
                     pieces = [_piece(node, scope) for node in element.elts[:3]]
                     first = element.elts[0] if element.elts else None
                     items.append((element, pieces, first))
+                    if len(element.elts) > 1:
+                        values[id(element)] = element.elts[1]
                 else:
                     items.append((element, _value_pieces(element, scope), None))
         elif listed is not None:
@@ -361,6 +420,8 @@ class _Scanner:
             found = self.add(call, at, statement, pieces, ignore, context, name_node)
             found.in_list = True
             found.namespace_node = args.get("namespace")
+            found.value_node = values.get(id(at))
+            found.item_value = _item_value(found, scope)
 
     def add(
         self,
@@ -371,7 +432,9 @@ class _Scanner:
         ignore: Piece,
         context: _Context,
         name_node: ast.AST | None,
+        into: list[Found] | None = None,
     ) -> Found:
+        """A declaration (or a read) found, in ``into`` (the unit's declarations)."""
         name, value, descriptor = pieces[:3]
         found = Found(
             call,
@@ -390,8 +453,10 @@ class _Scanner:
             loop_parameter=context.loop_parameter,
             loop_variable=context.loop_variable,
             when=context.when,
+            loop_prefix=context.loop_prefix,
+            loop_source=context.loop_source,
         )
-        self.unit.found.append(found)
+        (self.unit.found if into is None else into).append(found)
         return found
 
 
@@ -451,23 +516,12 @@ def parameter_read(node: ast.AST, scope: Scope, depth: int = 0) -> str | None:
         except UntranslatableError:
             return None
         return name if isinstance(name, str) else None
-    key = dotted_name(node)
-    if key is None or depth >= _MAX_READS or key.count(".") > 1:
+    if depth >= _MAX_READS:
         return None
-    if "." in key and not key.startswith("self."):
-        return None
-    assigned = scope.local.get(key, [])
-    if len(assigned) != 1 or not _ends_before(assigned[0], node):
-        return None
-    statement = assigned[0]
-    if not isinstance(statement, ast.Assign) or len(statement.targets) != 1:
+    statement = assigned_once_before(node, scope)
+    if statement is None:
         return None
     return parameter_read(statement.value, scope, depth + 1)
-
-
-def _ends_before(statement: ast.stmt, use: ast.AST) -> bool:
-    end = (statement.end_lineno or statement.lineno, statement.end_col_offset or 0)
-    return end <= (getattr(use, "lineno", 0), getattr(use, "col_offset", 0))
 
 
 def _calls(node: ast.AST, nested: str | None) -> Iterator[tuple[ast.Call, str | None]]:
@@ -565,6 +619,62 @@ def _joined(namespace: Piece, name: Piece) -> Piece:
     if not isinstance(namespace.value, str) or not isinstance(name.value, str):
         return name
     return Piece(True, f"{namespace.value}.{name.value}")
+
+
+_ACCESSORS = {
+    "bool_value": "bool",
+    "integer_value": "int",
+    "double_value": "double",
+    "string_value": "string",
+    "byte_array_value": "byte_array",
+    "bool_array_value": "bool_array",
+    "integer_array_value": "int_array",
+    "double_array_value": "double_array",
+    "string_array_value": "string_array",
+}
+
+
+def _reads_one(call: ast.Call) -> bool:
+    """``self.get_parameter(name)``."""
+    func = call.func
+    return (
+        isinstance(func, ast.Attribute)
+        and func.attr == "get_parameter"
+        and isinstance(func.value, ast.Name)
+        and func.value.id == "self"
+        and len(call.args) == 1
+        and not call.keywords
+    )
+
+
+def _accessor(call: ast.Call, parents: dict[ast.AST, ast.AST]) -> str:
+    """The schema type ``<call>.get_parameter_value().string_value`` names; "" for any
+    other use (``.value``)."""
+    method = parents.get(call)
+    value_call = parents.get(method) if method is not None else None
+    outer = parents.get(value_call) if value_call is not None else None
+    if (
+        isinstance(method, ast.Attribute)
+        and method.attr == "get_parameter_value"
+        and isinstance(value_call, ast.Call)
+        and isinstance(outer, ast.Attribute)
+    ):
+        return _ACCESSORS.get(outer.attr, "")
+    return ""
+
+
+SAMPLE_ITEM = "item"  # a loop's item, to type a value computed from it
+
+
+def _item_value(found: Found, scope: Scope) -> Piece | None:
+    """A value computed from the loop's item (``sensor + "_link"``), for a sample item; None
+    when the value is not computed, or not from the item."""
+    node, variable = found.value_node, found.loop_variable
+    if node is None or found.value.problem is None or variable is None:
+        return None
+    if not any(isinstance(n, ast.Name) and n.id == variable for n in ast.walk(node)):
+        return None
+    return _piece(node, scope.with_loop({variable: SAMPLE_ITEM}))
 
 
 def _bind(target: ast.expr, item: Any) -> dict[str, Any] | None:

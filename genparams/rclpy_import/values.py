@@ -134,6 +134,24 @@ def dotted_name(node: ast.AST) -> str | None:
     return None
 
 
+def assigned_once_before(node: ast.AST, scope: Scope) -> ast.Assign | None:
+    """The one assignment of the variable ``node`` (``v`` or ``self.v``) in the function,
+    when it ends before this use."""
+    key = dotted_name(node)
+    if key is None or key.count(".") > 1 or ("." in key and not key.startswith("self.")):
+        return None
+    assigned = scope.local.get(key, [])
+    if len(assigned) != 1:
+        return None
+    statement = assigned[0]
+    end = (statement.end_lineno or statement.lineno, statement.end_col_offset or 0)
+    if end > (getattr(node, "lineno", 0), getattr(node, "col_offset", 0)):
+        return None
+    if not isinstance(statement, ast.Assign) or len(statement.targets) != 1:
+        return None
+    return statement
+
+
 class Evaluator:
     def __init__(self, scope: Scope) -> None:
         self.scope = scope

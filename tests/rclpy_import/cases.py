@@ -17,6 +17,12 @@ class Case:
     cls: str | None  # --class, and the class the real-node test instantiates
     code: int  # expected exit code
     declare: str | None = None  # a module function declaring on a given node, if no class
+    params: str | None = None  # a params file under NODES both real nodes start with
+
+    @property
+    def ros_args(self) -> list[str]:
+        """The arguments that give a node the case's params file."""
+        return ["--params-file", str(NODES / self.params)] if self.params else []
 
     @property
     def args(self) -> list[str]:
@@ -26,17 +32,21 @@ class Case:
 CASES = [
     Case("arm_controller", "arm_controller.py", None, 0),
     Case("camera_driver", "camera_driver.py", None, 0),
+    Case("fleet_monitor", "fleet_monitor.py", None, 1, params="fleet_monitor.params.yaml"),
     Case("key_teleop", "key_teleop.py", None, 0),
     Case("legacy_bridge", "legacy_bridge.py", None, 1),
     Case("planner", "planner.py", None, 0),
+    Case("sensor_hub", "sensor_hub.py", None, 1, params="sensor_hub.params.yaml"),
     Case("serial_driver", "serial_driver.py", None, 0, declare="declare"),
     Case("two_nodes_service", "two_nodes.py", "ServiceNode", 0),
 ]
 CLASSES = {
     "arm_controller": "ArmControllerNode",
     "camera_driver": "CameraDriverNode",
+    "fleet_monitor": "FleetMonitor",
     "key_teleop": "KeyTeleop",
     "legacy_bridge": "LegacyBridge",
     "planner": "PlannerNode",
+    "sensor_hub": "SensorHubNode",
     "two_nodes_service": "ServiceNode",
 }

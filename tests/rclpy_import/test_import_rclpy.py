@@ -51,8 +51,10 @@ def test_every_untranslatable_construct_is_a_warning_at_its_place(
     code, _, err = run(capsys, "legacy_bridge.py", "-o", str(tmp_path / "s.yaml"))
     assert code == 1
     lines = err.splitlines()
+    assert (  # the node keeps the option, which changes nothing the schema states
+        "legacy_bridge.py:14:43: note: allow_undeclared_parameters=True: the node keeps it"
+    ) in lines[0]
     expected = {
-        "legacy_bridge.py:14:43: warning: allow_undeclared_parameters=True": "open groups",
         "legacy_bridge.py:25:32: home: warning: value computed": "environment",
         "legacy_bridge.py:27:13: limit: warning: descriptor field description": "imported",
         "legacy_bridge.py:30:13: retries: warning: integer_range on a double": "imported",
@@ -424,3 +426,109 @@ def test_a_mapped_group_the_schema_cannot_hold_stays_a_warning(
     parameters, err = _imported(tmp_path, body, capsys)
     assert message in err
     assert parameters.get("g") == kept
+
+
+KEYS = "{n.split('.')[1] for n in self._parameter_overrides if n.startswith('s.')}"
+
+
+def test_keys_found_under_a_prefix_in_the_overrides_make_an_open_group(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    parameters, err = _imported(
+        tmp_path,
+        f"""
+names = sorted({KEYS})
+for name in names:
+    self.declare_parameter(f's.{{name}}.rate', 5.0)
+    self.declare_parameter('s.' + name + '.frame', name + '_link')
+for key in list(k.split('.', 1)[0] for k in self.get_parameters_by_prefix('t')):
+    self.declare_parameters(f't.{{key}}', [('on', True)])
+""",
+        capsys,
+    )
+    assert parameters["s"] == {
+        "for_each": "overrides",
+        "rate": {"type": "double", "default": 5.0},
+        "frame": {"type": "string"},
+    }
+    assert parameters["t"] == {"for_each": "overrides", "on": {"type": "bool", "default": True}}
+    warnings = [line for line in err.splitlines() if ": warning: " in line]
+    assert warnings == [
+        f"{tmp_path / 'node.py'}:6:36: s.*.frame: warning: a default computed from the item "
+        "(name + '_link'): one schema default serves every entry: imported with none, so "
+        "each entry must be given a value"
+    ]
+
+
+@pytest.mark.parametrize(
+    "body, message",
+    [
+        (  # one value per key: an open group holds groups
+            f"for name in {KEYS}:\n    self.declare_parameter(f's.{{name}}', 1.0)",
+            "one value per key found under 's' in the overrides: an open group holds parameters "
+            "of each key (s.<key>.<field>)",
+        ),
+        (  # keys found under one prefix, entries under another
+            f"for name in {KEYS}:\n    self.declare_parameter(f'other.{{name}}.x', 1.0)",
+            "the keys are found under 's' in the overrides, the name puts them under 'other'",
+        ),
+        (  # the segment does not follow the prefix
+            "for name in {n.split('.')[2] for n in self._parameter_overrides "
+            "if n.startswith('s.')}:\n    self.declare_parameter(f's.{name}.x', 1.0)",
+            "self._parameter_overrides: reads what the params file brings: only a loop over the "
+            "keys found under a prefix",
+        ),
+        (  # keys from a by-prefix call, on a node that does not declare its overrides
+            "for k in self.get_parameters_by_prefix('s'):\n    self.declare_parameter(k, 1.0)",
+            "get_parameters_by_prefix(): reads what the params file brings",
+        ),
+        (  # a read on a node declaring what its overrides name: its name is computed
+            "super().__init__('n', automatically_declare_parameters_from_overrides=True)\n"
+            "self.declare_parameter('y', 1)\n"
+            "for k in ['a']:\n    self.get_parameter(self.prefix + k)",
+            "automatically_declare_parameters_from_overrides=True: declares whatever the params "
+            "file names, which a schema cannot state",
+        ),
+    ],
+)
+def test_what_an_open_group_cannot_hold_stays_a_warning(
+    body: str, message: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    parameters, err = _imported(tmp_path, body, capsys)
+    assert message in err
+    assert ": warning: " in err and "x" not in parameters and "s" not in parameters
+
+
+def test_the_patch_keeps_lines_within_100_columns(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    source = tmp_path / "long.py"
+    source.write_text(
+        "class LongNamesNode:\n"
+        "    def __init__(self):\n"
+        "        self.declare_parameter('sides', ['left', 'right'])\n"
+        "        for side in self.get_parameter('sides').value:\n"
+        "            first, second, third = self.declare_parameters(\n"
+        "                f'a_rather_long_namespace.{side}',\n"
+        "                [('first_setting', 1), ('second_setting', 2), ('third_setting', 3)],\n"
+        "            )\n"
+        "            print(first, second, third)\n"
+        "        value = self.declare_parameter('a_parameter_whose_name_is_long_enough_to_"
+        "wrap_on_a_line_of_its_own', 1.0).type_\n",
+        encoding="utf-8",
+    )
+    monkeypatch.chdir(tmp_path)
+    code, diff, err = run(capsys, "long.py", "--patch")
+    assert code == 0, err
+    assert (
+        "+            first, second, third = self.get_parameters(\n"
+        "+                [\n"
+        "+                    f'a_rather_long_namespace.{side}.first_setting',\n"
+    ) in diff
+    assert (
+        "+        value = self.get_parameter(\n"
+        "+            'a_parameter_whose_name_is_long_enough_to_wrap_on_a_line_of_its_own'\n"
+        "+        ).type_\n"
+    ) in diff
+    added = [line[1:] for line in diff.splitlines() if line.startswith("+")]
+    assert max(len(line) for line in added) <= 100
