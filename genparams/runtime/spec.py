@@ -24,7 +24,7 @@ if TYPE_CHECKING:
     from genparams.runtime.tree import Group
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class ParamSpec:
     name: str  # dotted ROS name relative to the prefix
     type: str  # one of the nine schema type names
@@ -94,7 +94,7 @@ class SchemaSpec:
     rules: tuple[RuleSpec, ...] = ()
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class EntryKeys:
     """The items of a ``for_each`` parameter name mapped entries: distinct, of ENTRY_KEY_RULE."""
 
@@ -117,7 +117,7 @@ class EntryKeys:
         return f"each item names an entry of {self.maps}: {ENTRY_KEY_RULE}; no repeats"
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, slots=True)
 class CompiledParam:
     """A ParamSpec made ready for checking: type row, attribute path, validator objects.
 
