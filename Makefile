@@ -101,8 +101,8 @@ screenshots: venv browser
 docs: venv
 	$(PYTHON) -m sphinx -W --keep-going -b html docs build/docs/html
 
-## Benchmarks against hand-written rclpy at 10 to 10,000 parameters: docs/benchmarks.md and .csv.
-bench: venv browser bench-targets
+## The runtime's targets, then benchmarks against hand-written rclpy at 10 to 10,000 parameters: docs/benchmarks.md and .csv.
+bench: venv browser
 	$(PYTHON) -m bench
 	$(PYTHON) -m bench.tune
 
@@ -110,7 +110,7 @@ bench: venv browser bench-targets
 bench-targets: venv
 	$(PYTHON) -m bench.targets
 
-## The benchmarks up to 1,000 parameters with three repeats, into build/bench-quick/.
+## The targets with fewer samples, the benchmarks up to 1,000 parameters with three repeats, into build/bench-quick/.
 bench-quick: venv
 	$(PYTHON) -m bench --quick
 

@@ -3,6 +3,9 @@
 ``--quick`` (or GENPARAMS_BENCH_QUICK=1) stops at 1,000 parameters with
 three repeats and writes to build/bench-quick instead of docs/, so a quick
 run never replaces the published numbers.
+
+The runtime's targets (``bench.targets``) are measured first and head the
+report, each met or missed with its numbers.
 """
 
 from __future__ import annotations
@@ -20,7 +23,7 @@ import time
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
-from bench import build_scenarios, memory_scenarios, node_scenarios
+from bench import build_scenarios, memory_scenarios, node_scenarios, targets
 from bench.measure import ROOT, Result
 from bench.report import csv_text, markdown
 from bench.workspace import Prepared, prepare
@@ -37,7 +40,19 @@ def parse(argv: Sequence[str] | None) -> argparse.Namespace:
     parser.add_argument("--repeats", type=int, help="samples per measurement (5; quick: 3)")
     parser.add_argument("--only", type=_scenarios, help=f"comma-separated: {','.join(SCENARIOS)}")
     parser.add_argument("--output-dir", type=Path, help="where benchmarks.md and .csv go")
+    parser.add_argument(
+        "--targets",
+        type=_targets,
+        default=None,
+        help="the targets' two sizes and the memory size, e.g. 100,1000,10000 (the default); "
+        "'none' skips them",
+    )
+    parser.add_argument("--target-samples", type=int, help="in-process samples (40; quick: 20)")
+    parser.add_argument("--target-processes", type=int, help="process samples (5; quick: 3)")
     args = parser.parse_args(argv)
+    args.targets = (100, 1_000, 10_000) if args.targets is None else args.targets
+    args.target_samples = args.target_samples or (20 if args.quick else 40)
+    args.target_processes = args.target_processes or (3 if args.quick else 5)
     args.sizes = args.sizes or (QUICK_SIZES if args.quick else FULL_SIZES)
     args.repeats = args.repeats or (3 if args.quick else 5)
     args.only = args.only or SCENARIOS
@@ -55,6 +70,15 @@ def _sizes(text: str) -> tuple[int, ...]:
     return tuple(sorted(int(part) for part in text.split(",")))
 
 
+def _targets(text: str) -> tuple[int, int, int] | tuple[()]:
+    if text == "none":
+        return ()
+    sizes = tuple(int(part) for part in text.split(","))
+    if len(sizes) != 3:
+        raise argparse.ArgumentTypeError("three sizes: the two compared, then the memory size")
+    return sizes[0], sizes[1], sizes[2]
+
+
 def _scenarios(text: str) -> tuple[str, ...]:
     chosen = tuple(part.strip() for part in text.split(","))
     unknown = set(chosen) - set(SCENARIOS)
@@ -70,6 +94,16 @@ def main(argv: Sequence[str] | None = None) -> int:
         compileall.compile_dir(str(ROOT / package), quiet=1)
     started = time.monotonic()
     load_before = _load_average()
+    judged: list[targets.Judged] = []
+    if args.targets:
+        small, large, memory_size = args.targets
+        judged = targets.measure(
+            args.target_samples,
+            args.target_processes,
+            sizes=(small, large),
+            memory_size=memory_size,
+            report=lambda outcome: print(outcome.line(), file=sys.stderr, flush=True),
+        )
     results: list[Result] = []
     session = node_scenarios.RosSession()
     try:
@@ -83,7 +117,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     command = "make bench-quick" if args.quick else "make bench"
     args.output_dir.mkdir(parents=True, exist_ok=True)
     (args.output_dir / "benchmarks.md").write_text(
-        markdown(results, machine, command), encoding="utf-8"
+        markdown(results, machine, command, judged), encoding="utf-8"
     )
     (args.output_dir / "benchmarks.csv").write_text(csv_text(results), encoding="utf-8")
     print(f"wrote {args.output_dir / 'benchmarks.md'} and benchmarks.csv", file=sys.stderr)
@@ -143,6 +177,12 @@ def machine_info(args: argparse.Namespace, load_before: str, elapsed: float) -> 
         "CPU": f"{_cpu_model()}, {os.cpu_count()} logical cores",
         "load average (1 min) before / after": f"{load_before} / {_load_average()}",
         "sizes, repeats": f"{', '.join(f'{n:,}' for n in args.sizes)}; {args.repeats}",
+        "targets: sizes; samples in process / processes": (
+            f"{', '.join(f'{n:,}' for n in args.targets)}; "
+            f"{args.target_samples} / {args.target_processes}"
+            if args.targets
+            else "not measured"
+        ),
         "duration": f"{elapsed / 60:.1f} min",
     }
 

@@ -71,6 +71,12 @@ def test_quick_benchmark_writes_every_scenario(tmp_path: Path) -> None:
             "1",
             "--output-dir",
             str(tmp_path),
+            "--targets",
+            "20,30,40",
+            "--target-samples",
+            "2",
+            "--target-processes",
+            "1",
         ],
         cwd=ROOT,
         env=dict(os.environ),
@@ -91,7 +97,19 @@ def test_quick_benchmark_writes_every_scenario(tmp_path: Path) -> None:
     for section in SECTIONS:
         assert f"## {section.title}" in report
     assert "_not measured in this run_" not in report
-    assert "| declare: within 1.2x" in report
+    targets = report.split("## Runtime targets", 1)[1].split("\n## ", 1)[0]
+    for target in (
+        "one node.set_parameters, N=20 |",
+        "one node.set_parameters, N=30 |",
+        "declare on a fresh node, N=20 |",
+        "whole process, start to declared, N=30 |",
+        "RSS growth, N=40 |",
+        "read cfg.",
+        "snapshot() O(1)",
+        "snapshot() never torn",
+    ):
+        assert f"| {target}" in targets, target
+    assert targets.count(" | met |") + targets.count(" | **missed** |") == 10
 
 
 def test_profile_splits_declare_and_set_into_steps() -> None:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import keyword
 import re
+import sys
 from collections.abc import Sequence
 
 # One token of a ROS parameter name. ROS also accepts a leading underscore;
@@ -112,7 +113,10 @@ def attribute_name(ros_token: str, *, top_level: bool = False) -> str:
 def attribute_parts(ros_name: str) -> tuple[str, ...]:
     """The attribute path of a dotted ROS name (its first token is at the top level)."""
     parts = ros_name.split(".")
-    return tuple(attribute_name(part, top_level=index == 0) for index, part in enumerate(parts))
+    # Interned: the same few names (`a0`, `gain`) recur in every path of a large schema.
+    return tuple(
+        sys.intern(attribute_name(part, top_level=index == 0)) for index, part in enumerate(parts)
+    )
 
 
 def pascal_case(name: str) -> str:

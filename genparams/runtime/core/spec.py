@@ -27,7 +27,7 @@ CONFIGURE_ONLY_TEXT = "changes only while the lifecycle node is unconfigured or 
 """The words of ``configure_only``: one source for descriptors, docs and refusals."""
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class ParamSpec:
     name: str  # dotted ROS name relative to the prefix
     type: str  # one of the nine schema type names
@@ -97,7 +97,7 @@ class SchemaSpec:
     rules: tuple[RuleSpec, ...] = ()
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class EntryKeys:
     """The items of a ``for_each`` parameter name mapped entries: distinct, of ENTRY_KEY_RULE."""
 
@@ -120,7 +120,7 @@ class EntryKeys:
         return f"each item names an entry of {self.maps}: {ENTRY_KEY_RULE}; no repeats"
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, slots=True)
 class CompiledParam:
     """A ParamSpec made ready for checking: type row, attribute path, validator objects.
 

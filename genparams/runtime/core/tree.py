@@ -185,8 +185,11 @@ def build_tree(
     def make(cls: type[Group], template: str, level: dict[str, Any]) -> Group:
         for name in children.get(template, ()):
             level.setdefault(name, {})
-        if cls not in _ROS_KEYS:
-            _ROS_KEYS[cls] = {attribute_name(key, top_level=not template): key for key in level}
+        if cls not in _ROS_KEYS:  # interned: the same few names recur in every class
+            _ROS_KEYS[cls] = {
+                sys.intern(attribute_name(key, top_level=not template)): sys.intern(key)
+                for key in level
+            }
         node = object.__new__(cls)
         if template in maps and (template in groups or not template):
             # An in-place map: the names that are not fields are its entries' keys.
@@ -292,8 +295,8 @@ def reuse_values(root: G, updates: Mapping[tuple[str, ...], Any], extra: Iterabl
     else:
         new = copy_node(root, extra)
     if len(updates) == 1:  # one set: no grouping by head
-        ((path, value),) = updates.items()
-        _reuse_below(new, path, value)
+        for path, value in updates.items():
+            _reuse_below(new, path, value)
         return new
     by_head: dict[str, dict[tuple[str, ...], Any]] = {}
     for path, value in updates.items():
@@ -315,23 +318,28 @@ def reuse_values(root: G, updates: Mapping[tuple[str, ...], Any], extra: Iterabl
 def _reuse_below(node: Any, path: tuple[str, ...], value: Any) -> None:
     """``reuse_values`` of one path below a group already written in place or copied."""
     refs = sys.getrefcount
-    for name in path[:-1]:
+    only = _ONLY_HOLDER
+    *heads, leaf = path
+    for name in heads:
         parent = node
         if type(parent) is GroupMap:
             node = parent._entries[name]
         else:
             node = getattr(parent, name)
-        if refs(node) == _ONLY_HOLDER and type(node) is not GroupMap:
+        if refs(node) == only and type(node) is not GroupMap:
             continue  # written in place
         node = copy_node(node)
         if type(parent) is GroupMap:
             parent._entries[name] = node
         else:
-            object.__setattr__(parent, name, node)
+            _set_slot(parent, name, node)
     if type(node) is GroupMap:
-        node._entries[path[-1]] = value
+        node._entries[leaf] = value
     else:
-        object.__setattr__(node, path[-1], value)
+        _set_slot(node, leaf, value)
+
+
+_set_slot = object.__setattr__  # a module global: no attribute lookup on every set
 
 
 class _Holder:

@@ -11,7 +11,7 @@ each value carries its own type, one of the nine, which a set may change.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, ClassVar, TypeAlias
 
 from genparams.runtime.core.errors import GenparamsError
@@ -37,7 +37,7 @@ class ValueTypeError(GenparamsError, ValueError):
     """A value does not have the parameter's type."""
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class ParamType:
     name: str  # schema spelling, e.g. "double_array"
     ros_type: int  # rcl_interfaces/msg/ParameterType constant
@@ -46,10 +46,14 @@ class ParamType:
     element: str | None  # element kind for arrays: bool | int | double | string | byte
     json_type: str  # JSON Schema type of a value
     is_dynamic: ClassVar[bool] = False  # ``any``: the type is the value's own (dynamic_typing)
+    # Read on every set, so stored rather than computed: whether values are arrays, and
+    # the one Python type whose values ROS hands over already in typed-view form.
+    is_array: bool = field(init=False, repr=False, compare=False)
+    ready: type | None = field(init=False, repr=False, compare=False)
 
-    @property
-    def is_array(self) -> bool:
-        return self.element is not None
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "is_array", self.element is not None)
+        object.__setattr__(self, "ready", _READY.get(self.name))
 
     def of_value(self, value: Any) -> ParamType:
         """The type a typed-view value has under this parameter type: its own for ``any``."""
@@ -84,6 +88,8 @@ class ParamType:
 
     def from_ros(self, value: Any) -> Any:
         """Convert a ROS parameter value to typed-view form, exactly as ROS types it."""
+        if type(value) is self.ready:  # a bool or a double: nothing to convert or check
+            return value
         # An empty list carries no element type (rclpy calls it BYTE_ARRAY), and rcl's
         # params-file parser reads `[]` as NOT_SET (None): both mean "empty" for an array.
         if self.is_array and (value is None or (isinstance(value, (list, tuple)) and not value)):
@@ -112,6 +118,11 @@ class ParamType:
             except ValueTypeError as exc:
                 raise ValueTypeError(f"item {index}: {exc}") from None
         return tuple(items)
+
+
+# Types whose ROS values need neither conversion nor a check beyond their exact type
+# (an int must fit in int64 and a string must travel as UTF-8, so those are checked).
+_READY: dict[str, type] = {"bool": bool, "double": float}
 
 
 def _describe(value: Any) -> str:
@@ -197,6 +208,7 @@ class DynamicType(ParamType):
     must share one; a list of ints and doubles is a double_array in a schema default.
     An empty list is a byte_array, as rclpy infers it; a schema default cannot be one."""
 
+    __slots__ = ()
     is_dynamic: ClassVar[bool] = True
 
     def of_value(self, value: Any) -> ParamType:

@@ -51,24 +51,28 @@ def fmt(value: Any) -> str:
     return text if len(text) <= 60 else text[:57] + "..."
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Compare:
     """``gt``, ``ge``, ``lt``, ``le`` against a number."""
 
     rule: str
     limit: float
+    holds: Callable[[Any, Any], bool] = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "holds", _COMPARISONS[self.rule][1])
 
     def __call__(self, value: Any) -> str | None:
-        symbol, holds = _COMPARISONS[self.rule]
-        if holds(value, self.limit):  # NaN compares false, so it is rejected
+        if self.holds(value, self.limit):  # NaN compares false, so it is rejected
             return None
+        symbol = _COMPARISONS[self.rule][0]
         return f"must be {symbol} {self.limit!r} ({self.rule}), got {fmt(value)}"
 
     def describe(self) -> str:
         return f"must be {_COMPARISONS[self.rule][0]} {self.limit!r}"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Bounds:
     """Inclusive bounds; with ``each``, applied to every element of an array."""
 
@@ -100,7 +104,7 @@ class Bounds:
         return f"{text} or NaN" if self.nan_passes else text
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class RosRange:
     """The ``range:`` key, with exactly the semantics rclpy applies to descriptor ranges.
 
@@ -153,7 +157,7 @@ class RosRange:
         return ("every item " if self.each else "") + text
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class OneOf:
     choices: tuple[Any, ...]
     rule: str = "one_of"
@@ -167,7 +171,7 @@ class OneOf:
         return "one of " + ", ".join(fmt(c) for c in self.choices)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class SubsetOf:
     choices: tuple[Any, ...]
     rule: str = "subset_of"
@@ -185,7 +189,7 @@ class SubsetOf:
         return "every item one of " + ", ".join(fmt(c) for c in self.choices)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class NotEmpty:
     rule: str = "not_empty"
 
@@ -196,7 +200,7 @@ class NotEmpty:
         return "not empty"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Unique:
     rule: str = "unique"
 
@@ -212,7 +216,7 @@ class Unique:
         return "no repeated items"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Length:
     min: int | None = None
     max: int | None = None
@@ -243,7 +247,7 @@ class Length:
 PATTERN_TIMEOUT_S = 0.05
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Pattern:
     """Python ``re`` syntax, matched by the ``regex`` module (its V0 mode) with a time limit."""
 
@@ -277,7 +281,7 @@ class Pattern:
         return f"matches {self.regex!r}"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Custom:
     """A user function ``module:function`` taking the value then ``args``: None (or ``""``,
     as generate_parameter_library's Python validators return) or a reason.

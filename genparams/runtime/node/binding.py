@@ -41,9 +41,9 @@ from genparams.runtime.node.deprecation import DeprecationWatch, Notices, report
 from genparams.runtime.node.lifecycle import mutability_problem
 from genparams.runtime.node.mapped import EntryOwner, EntryPlan, MappedEntries
 from genparams.runtime.node.overrides import OverrideReader
-from genparams.runtime.node.rewrites import add_rewrite, typed_empty_arrays
 
 P = TypeVar("P", bound=ParamsView)
+_EXTRA = ("_binding",)  # the root's slot that is no field
 _NOT_SET = Parameter.Type.NOT_SET  # reading an Enum member costs on every set
 
 
@@ -147,7 +147,7 @@ class Binding(Generic[P]):
         binding.live = live
         if any(param.type.is_array for param in every):
             old_names = {old: owned[cur] for old, cur in aliases.current_of.items()}
-            add_rewrite(node, typed_empty_arrays(collections.ChainMap(binding.owned, old_names)))
+            sets.retype_empty_arrays(collections.ChainMap(binding.owned, old_names))
         # Mapped groups, old names and deprecations each watch the node on their own.
         entry_owner = EntryOwner(node, prefix, binding.owned, sets.check)
         binding.mapped = MappedEntries.attach(entry_owner, compiled, parameters, notices)
@@ -201,15 +201,15 @@ class Binding(Generic[P]):
             paths[path] = value
             if subscribed:
                 changed.append(Change(param.name, old, value))
-        if paths:
-            if self.spare is None:
-                after = replace_values(before, paths, extra=("_binding",))
-                self.publish(before, after, changed, paths)
-            else:
-                behind = self.behind
-                behind.update(paths)
-                self.spare = reuse_values(self.spare, behind, extra=("_binding",))
-                self.publish(before, self.spare, changed, paths, behind)
+        if not paths:
+            return True
+        if self.spare is None:
+            self.publish(before, replace_values(before, paths, _EXTRA), changed, paths)
+            return True
+        behind = self.behind
+        behind.update(paths)
+        self.spare = reuse_values(self.spare, behind, _EXTRA)
+        self.publish(before, self.spare, changed, paths, behind)
         return True
 
     def reshape(self, updates: dict[CompiledParam, Any]) -> None:
@@ -269,7 +269,8 @@ class Binding(Generic[P]):
         self.current = after
         live = self.live
         for path in replaced or paths or ():  # a head set twice is set to the same group
-            object.__setattr__(live, path[0], getattr(after, path[0]))
+            head = path[0]
+            _set_slot(live, head, getattr(after, head))
         if paths is None:
             self.spare, self.behind = None, {}
         else:
@@ -300,6 +301,9 @@ class Binding(Generic[P]):
         return unsubscribe
 
 
+_set_slot = object.__setattr__  # a module global: no attribute lookup on every set
+
+
 def check_each(
     owned: Mapping[str, CompiledParam], parameters: Sequence[Parameter]
 ) -> tuple[dict[CompiledParam, Any], list[ParameterProblem]]:
@@ -311,16 +315,19 @@ def check_each(
         param = owned.get(parameter.name)
         if param is None:
             continue
-        if parameter.type_ is _NOT_SET:
+        value = parameter.value
+        if value is None and parameter.type_ is _NOT_SET:  # only NOT_SET carries None
             reasons.append(ParameterProblem(parameter.name, "cannot be undeclared"))
             continue
         try:
-            value = param.type.from_ros(parameter.value)
+            value = param.type.from_ros(value)
         except ValueError as exc:
             reasons.append(ParameterProblem(parameter.name, str(exc)))
             continue
-        reason = param.check(value)
-        if reason is not None:
-            reasons.append(ParameterProblem(parameter.name, reason))
+        for check in param.checks:  # param.check inlined: a call less on every set
+            reason = check(value)
+            if reason is not None:
+                reasons.append(ParameterProblem(parameter.name, reason))
+                break
         typed[param] = value
     return typed, reasons

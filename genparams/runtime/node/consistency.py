@@ -36,7 +36,7 @@ from __future__ import annotations
 
 import collections
 import threading
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, MutableMapping, Sequence
 from typing import TYPE_CHECKING, Any, Protocol
 
 from rcl_interfaces.msg import SetParametersResult
@@ -46,6 +46,7 @@ from rclpy.parameter import Parameter
 from genparams.runtime.core.errors import GenparamsError
 from genparams.runtime.core.problems import ParameterProblem, render_problem, render_problems
 from genparams.runtime.node import rclpy_internals as internals
+from genparams.runtime.node.rewrites import Rewrite, typed_empty_arrays
 
 if TYPE_CHECKING:
     from rclpy.node import Node
@@ -119,6 +120,10 @@ class NodeSets:
         self.frames: list[Frame] = []
         self.deliveries: collections.deque[Delivery] = collections.deque()
         self.draining = False
+        # Full names -> array parameters, of every class that has any: an empty array in
+        # a request takes its declared type before rclpy checks it (rewrites.py).
+        self.arrays: collections.ChainMap[str, CompiledParam] = collections.ChainMap()
+        self.retype: Rewrite | None = None
         self.unlocked_set = internals.set_path(node)
         self.run_post_set = internals.post_set_caller(node)
         self.undeclare = internals.replace_undeclare(node, self.undeclare_checked)
@@ -131,6 +136,9 @@ class NodeSets:
         self, parameter_list: Any, descriptors: Any = None, allow_not_set_type: bool = False
     ) -> SetParametersResult:
         with self.lock:
+            retype = self.retype
+            if retype is not None:
+                parameter_list = retype(parameter_list)
             frames = self.frames
             frames.append((descriptors is not None, {}))
             try:
@@ -142,6 +150,12 @@ class NodeSets:
                 if not frames and self.deliveries and not self.draining:
                     self.drain()
             return result
+
+    def retype_empty_arrays(self, declared: MutableMapping[str, CompiledParam]) -> None:
+        """Give an empty array set on any of ``declared`` (full name -> parameter, read at
+        each set) the parameter's declared array type."""
+        self.arrays.maps.append(declared)
+        self.retype = typed_empty_arrays(self.arrays)
 
     def check(self, parameters: Sequence[Parameter]) -> SetParametersResult:
         """genparams' on-set callback, run after every other one: each class checks its part."""

@@ -5,8 +5,10 @@ that each hand back the request would make it set every parameter twice.
 genparams installs a single pre-set callback per node and passes the request
 through each binding's rewrite in turn.
 
-Two rewrites exist: old names mirrored onto current names (``aliases.py``) and
-typed empty arrays (below).
+Old names are mirrored onto current names this way (``aliases.py``). Typed
+empty arrays (below) are not a pre-set callback: the node's set path applies
+them (``consistency.NodeSets``), so a class without old names adds no pre-set
+callback and no list copy to a set.
 """
 
 from __future__ import annotations
@@ -71,7 +73,7 @@ def typed_empty_arrays(declared: Mapping[str, CompiledParam]) -> Rewrite:
 
     def rewrite(parameters: list[Parameter]) -> list[Parameter]:
         for parameter in parameters:  # a plain loop: any() over a generator costs on every set
-            if _is_empty_array(parameter):
+            if not parameter.value and _is_empty_array(parameter):  # most values are truthy
                 break
         else:
             return parameters
