@@ -6,14 +6,14 @@ import http.client
 import json
 import os
 import subprocess
-import sys
 import time
-from collections.abc import Callable, Iterator
-from contextlib import contextmanager
+from collections.abc import Callable
+from contextlib import AbstractContextManager
 from typing import TYPE_CHECKING, Any
 
 from genparams.runtime.core.json_codec import dumps
-from tests.support import ROOT
+from tests.node_process import node_process
+from tests.patience import WAIT_S
 
 if TYPE_CHECKING:
     from genparams.tune.server import TuneServer
@@ -35,34 +35,12 @@ def unique(stem: str) -> str:
     return f"{stem}_{os.getpid()}"
 
 
-@contextmanager
-def demo_nodes(
-    *specs: str, ros_args: tuple[str, ...] = (), module: str = "tests.tune.demo_nodes"
-) -> Iterator[subprocess.Popen[str]]:
-    """``python -m MODULE NAME:KIND...`` until the block ends (MODULE prints "ready")."""
-    command = [sys.executable, "-m", module, *specs]
-    if ros_args:
-        command += ["--", *ros_args]
-    process = subprocess.Popen(
-        command, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
-    )
-    try:
-        assert process.stdout is not None
-        line = process.stdout.readline()  # blocks until the nodes are declared
-        if line.strip() != "ready":
-            process.kill()
-            raise RuntimeError(f"demo nodes failed: {line}{process.communicate()[1]}")
-        yield process
-    finally:
-        process.terminate()
-        try:
-            process.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            process.kill()
-            process.wait()
+def demo_nodes(*specs: str) -> AbstractContextManager[subprocess.Popen[str]]:
+    """The nodes of tests.tune.demo_nodes (NAME:KIND...) until the block ends."""
+    return node_process("tests.tune.demo_nodes", *specs)
 
 
-def eventually(probe: Callable[[], Any], timeout: float = 10.0, interval: float = 0.05) -> Any:
+def eventually(probe: Callable[[], Any], timeout: float = WAIT_S, interval: float = 0.05) -> Any:
     """Poll ``probe`` until it returns a true value; its last value on timeout fails."""
     deadline = time.monotonic() + timeout
     while True:

@@ -24,6 +24,7 @@ from genparams.runtime.core.json_codec import loads
 from genparams.runtime.core.spec import compile_schema
 from genparams.runtime.node.schema_topic import SCHEMA_TOPIC_SUFFIX, class_text, node_message_text
 from genparams.tune.server import TuneServer
+from tests.node_process import node_process
 from tests.support import ROOT, load_generated
 from tests.tune.support import (
     CHROMIUM,
@@ -79,19 +80,11 @@ def graph_with_hostiles(tmp_path_factory: pytest.TempPathFactory) -> Iterator[No
     workdir = tmp_path_factory.mktemp("hostile")
     spec_file = workdir / "hostile.json"
     spec_file.write_text(json.dumps(hostile_entries(workdir)), encoding="utf-8")
-    command = [sys.executable, "-m", "tests.tune.hostile_schemas", str(spec_file)]
-    with demo_nodes(f"{CAM[1:]}:camera", f"{PLAIN[1:]}:plain"):
-        hostile = subprocess.Popen(command, cwd=ROOT, stdout=subprocess.PIPE, text=True)
-        try:
-            assert hostile.stdout is not None and hostile.stdout.readline().strip() == "ready"
-            yield
-        finally:
-            hostile.terminate()
-            try:
-                hostile.wait(timeout=30)
-            except subprocess.TimeoutExpired:  # a loaded machine: stop it the hard way
-                hostile.kill()
-                hostile.wait()
+    with (
+        demo_nodes(f"{CAM[1:]}:camera", f"{PLAIN[1:]}:plain"),
+        node_process("tests.tune.hostile_schemas", str(spec_file)),
+    ):
+        yield
 
 
 @pytest.fixture(scope="module")
