@@ -10,8 +10,6 @@ from __future__ import annotations
 
 import json
 import math
-import os
-import subprocess
 import sys
 from collections.abc import Iterator
 from pathlib import Path
@@ -25,6 +23,7 @@ from genparams.runtime.core.spec import compile_schema
 from genparams.runtime.node.schema_topic import SCHEMA_TOPIC_SUFFIX, class_text, node_message_text
 from genparams.tune.server import TuneServer
 from tests.node_process import node_process
+from tests.patience import WAIT_S, run_patiently
 from tests.support import ROOT, load_generated
 from tests.tune.support import (
     CHROMIUM,
@@ -121,7 +120,7 @@ def test_tuning_shows_each_bad_schema_as_a_problem_and_tunes_the_good_node(
         arrived = all(part in (problems.get(node) or "") for node, part in EXPECTED.items())
         return problems if arrived else None
 
-    problems = eventually(all_arrived, timeout=20)
+    problems = eventually(all_arrived)
     assert problems[CAM] is None
 
     # The executor survived every message: the good node reads and sets as before.
@@ -147,7 +146,7 @@ def test_tuning_shows_each_bad_schema_as_a_problem_and_tunes_the_good_node(
 
 
 def test_the_page_shows_the_problem(server: TuneServer) -> None:
-    eventually(lambda: listed_problems(server).get(SPOOFER), timeout=20)
+    eventually(lambda: listed_problems(server).get(SPOOFER))
     with sync_playwright() as playwright:
         browser = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
         try:
@@ -167,21 +166,11 @@ def test_the_page_shows_the_problem(server: TuneServer) -> None:
 def test_the_audit_reports_each_bad_schema_and_the_good_node_fine(
     graph_with_hostiles: None,
 ) -> None:
-    nodes = [CAM, *EXPECTED]
-    command = [
-        sys.executable,
-        "-m",
-        "genparams",
-        "audit",
-        "--format",
-        "json",
-        "--timeout",
-        "30",
-        *nodes,
-    ]
-    done = subprocess.run(
-        command, cwd=ROOT, capture_output=True, text=True, timeout=120, env=dict(os.environ)
-    )
+    # Every node named publishes on its schema topic: the waits end when discovery does.
+    wait = f"{WAIT_S:g}"
+    command = [sys.executable, "-m", "genparams", "audit", "--format", "json"]
+    command += ["--settle", wait, "--timeout", wait, CAM, *EXPECTED]
+    done = run_patiently(command, budget_s=2 * WAIT_S, cwd=ROOT)
     assert "Traceback" not in done.stderr, done.stderr
     assert done.returncode == 1, done.stdout + done.stderr
     report = json.loads(done.stdout, parse_constant=lambda token: pytest.fail(token))
