@@ -9,7 +9,7 @@ from rcl_interfaces.srv import DescribeParameters, GetParameters, ListParameters
 
 from genparams.import_node.convert import NOT_SET, Reported
 from genparams.tune.graph import Graph
-from genparams.tune.reader import answers, python_value, wait_future
+from genparams.tune.reader import answers, python_value
 
 
 def read_node(node: str, timeout: float) -> list[Reported]:
@@ -46,8 +46,8 @@ def read_node(node: str, timeout: float) -> list[Reported]:
 
 
 def _value(getter: Any, name: str, timeout: float) -> Any:
-    answer = wait_future(getter.call_async(GetParameters.Request(names=[name])), timeout)
-    return answer.values[0] if answer.values else ParameterValue(type=NOT_SET)
+    asked = answers([lambda: getter.call_async(GetParameters.Request(names=[name]))], timeout)
+    return asked[0].values[0] if asked[0].values else ParameterValue(type=NOT_SET)
 
 
 def _reported(name: str, value: Any, descriptor: Any) -> Reported:
