@@ -11,9 +11,12 @@ from collections.abc import Callable
 from contextlib import AbstractContextManager
 from typing import TYPE_CHECKING, Any
 
+from playwright.sync_api import Locator, Page, expect
+
 from genparams.runtime.core.json_codec import dumps
 from tests.node_process import node_process
 from tests.patience import WAIT_S
+from tests.support import RosHarness, ServiceClient
 
 if TYPE_CHECKING:
     from genparams.tune.server import TuneServer
@@ -118,3 +121,27 @@ def api_call(server: TuneServer, path: str, body: Any = None) -> Answer:
         body = dumps(body).encode("ascii")
     method = "GET" if body is None else "POST"
     return http_call(server.port, method, path, body=body, token=server.token)
+
+
+def open_node(page: Page, server: TuneServer, node: str) -> None:
+    """Open the page, then ``node`` from the list, as a user does; return once its form shows
+    and the page listens to the server's events (a change made before is in the form)."""
+    page.goto(server.url)
+    page.locator(f'[data-node-link="{node}"] a').click()
+    expect(page.locator(f'form[data-node="{node}"]')).to_be_visible()
+    expect(page.locator("body[data-listening]")).to_be_attached()
+
+
+def error(page: Page, name: str) -> Locator:
+    """Where the page says why a parameter's value is refused."""
+    return page.locator(f'[data-param-error="{name}"]')
+
+
+_CLIENTS: dict[str, ServiceClient] = {}
+
+
+def service_client(ros_harness: RosHarness, node: str) -> ServiceClient:
+    """One parameter client per node for the session: each opens six service clients."""
+    if node not in _CLIENTS:
+        _CLIENTS[node] = ServiceClient(ros_harness, node)
+    return _CLIENTS[node]

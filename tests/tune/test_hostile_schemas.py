@@ -153,10 +153,10 @@ def test_the_page_shows_the_problem(server: TuneServer) -> None:
             page = browser.new_page()
             page.goto(server.url + f"#{SPOOFER}")
             problem = page.locator("[data-schema-problem]")
-            expect(problem).to_be_visible(timeout=10_000)
+            expect(problem).to_be_visible()
             expect(problem).to_contain_text(EXPECTED[SPOOFER])
             badge = page.locator(f'[data-node-link="{SPOOFER}"] .badge')
-            expect(badge).to_have_text("bad schema", timeout=10_000)
+            expect(badge).to_have_text("bad schema")
             cam_badge = page.locator(f'[data-node-link="{CAM}"] .badge')
             expect(cam_badge).to_have_text("schema")
         finally:

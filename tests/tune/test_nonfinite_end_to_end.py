@@ -92,7 +92,7 @@ def test_the_page_decodes_the_tags(server: TuneServer) -> None:
         try:
             page = browser.new_page()
             page.goto(server.url + f"#{NODE}")
-            expect(page.locator(f'form[data-node="{NODE}"]')).to_be_visible(timeout=10_000)
+            expect(page.locator(f'form[data-node="{NODE}"]')).to_be_visible()
             expect(page.locator('[data-param="threshold"]')).to_have_count(1)
             # NaN holding NaN and inf holding inf are at their defaults.
             expect(page.locator("[data-diff-empty]")).to_be_visible()
@@ -116,7 +116,7 @@ def test_the_page_shows_and_takes_nan_and_infinities_by_name(server: TuneServer)
             page = browser.new_page()
             page.goto(server.url + f"#{NODE}")
             threshold = page.locator('[data-param="threshold"]')
-            expect(threshold).to_have_value("nan", timeout=10_000)
+            expect(threshold).to_have_value("nan")
             expect(page.locator('[data-param="floor"]')).to_have_value("-inf")
             expect(page.locator('[data-param="mode"]')).to_have_value("1")
             threshold.fill("inf")
