@@ -6,17 +6,19 @@ import http.client
 import json
 import os
 import subprocess
+import sys
 import time
 from collections.abc import Callable
 from contextlib import AbstractContextManager
+from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from playwright.sync_api import Locator, Page, expect
 
 from genparams.runtime.core.json_codec import dumps
 from tests.node_process import node_process
-from tests.patience import WAIT_S
-from tests.support import RosHarness, ServiceClient
+from tests.patience import WAIT_S, run_patiently
+from tests.support import ROOT, RosHarness, ServiceClient
 
 if TYPE_CHECKING:
     from genparams.tune.server import TuneServer
@@ -41,6 +43,14 @@ def unique(stem: str) -> str:
 def demo_nodes(*specs: str) -> AbstractContextManager[subprocess.Popen[str]]:
     """The nodes of tests.tune.demo_nodes (NAME:KIND...) until the block ends."""
     return node_process("tests.tune.demo_nodes", *specs)
+
+
+def run_audit(*args: str, cwd: Path = ROOT) -> subprocess.CompletedProcess[str]:
+    """``genparams audit ARGS`` on nodes that all publish a schema: its waits (discovery, the
+    schema topics, the answers) end as soon as discovery does, however long that takes."""
+    wait = f"{WAIT_S:g}"
+    command = [sys.executable, "-m", "genparams", "audit", "--settle", wait, "--timeout", wait]
+    return run_patiently([*command, *args], budget_s=2 * WAIT_S, cwd=cwd)
 
 
 def eventually(probe: Callable[[], Any], timeout: float = WAIT_S, interval: float = 0.05) -> Any:

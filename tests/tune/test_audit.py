@@ -3,8 +3,6 @@
 from __future__ import annotations
 
 import json
-import subprocess
-import sys
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -17,9 +15,9 @@ from genparams.audit.report import json_report
 from genparams.audit.walk import AuditResult, audit
 from genparams.runtime.schema_topic import SCHEMA_TOPIC_SUFFIX
 from genparams.tune.graph import Graph
-from tests.patience import WAIT_S, run_patiently
-from tests.support import ROOT, RosHarness, ServiceClient
-from tests.tune.support import demo_nodes, eventually, unique
+from tests.patience import WAIT_S
+from tests.support import RosHarness, ServiceClient
+from tests.tune.support import demo_nodes, eventually, run_audit, unique
 
 LOOSE, PLAIN, CAM, ARM = (f"/{unique(f'audit_{s}')}" for s in ("loose", "plain", "cam", "arm"))
 NODES = (LOOSE, PLAIN, CAM, ARM)
@@ -105,15 +103,8 @@ def test_the_json_report_lists_the_nodes_without_schema(result: AuditResult) -> 
     assert report["without_schema"] == [PLAIN]
 
 
-def audit_command(*args: str) -> subprocess.CompletedProcess[str]:
-    """The command on nodes that all publish a schema: its waits end when discovery does."""
-    command = [sys.executable, "-m", "genparams", "audit", "--settle", f"{WAIT_S:g}"]
-    command += ["--timeout", f"{WAIT_S:g}", *args]
-    return run_patiently(command, budget_s=2 * WAIT_S, cwd=ROOT)
-
-
 def test_the_command_exits_1_with_a_json_report(running: None, deployment: Path) -> None:
-    done = audit_command("--format", "json", "--params-file", str(deployment), LOOSE, CAM, ARM)
+    done = run_audit("--format", "json", "--params-file", str(deployment), LOOSE, CAM, ARM)
     assert done.returncode == 1, done.stderr
     report = json.loads(done.stdout)
     assert report["ok"] is False
@@ -123,7 +114,7 @@ def test_the_command_exits_1_with_a_json_report(running: None, deployment: Path)
 
 
 def test_a_clean_graph_exits_0(running: None) -> None:
-    done = audit_command(ARM)
+    done = run_audit(ARM)
     assert done.returncode == 0, done.stdout + done.stderr
     assert "audited 1 node(s) with a schema, 0 without; 0 violation(s)" in done.stdout
 
@@ -131,6 +122,6 @@ def test_a_clean_graph_exits_0(running: None) -> None:
 def test_an_unreadable_params_file_is_bad_input(tmp_path: Path) -> None:
     bad = tmp_path / "bad.yaml"
     bad.write_text("node: [unclosed\n", encoding="utf-8")
-    done = audit_command("--params-file", str(bad))
+    done = run_audit("--params-file", str(bad))
     assert done.returncode == 2
     assert "bad.yaml:" in done.stderr

@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import json
 import math
-import os
 import subprocess
 import sys
 from collections.abc import Iterator
@@ -24,6 +23,7 @@ from tests.tune.support import (
     api_call,
     demo_nodes,
     eventually,
+    run_audit,
     unique,
 )
 
@@ -139,15 +139,7 @@ def test_download_then_audit_finds_no_drift(server: TuneServer, tmp_path: Path) 
     params = tmp_path / "nonfinite.yaml"
     params.write_text(get(server, f"/api/params-file?node={NODE}"), encoding="utf-8")
     assert ".nan" in params.read_text(encoding="utf-8")
-    command = [sys.executable, "-m", "genparams", "audit", "--format", "json"]
-    done = subprocess.run(
-        [*command, "--params-file", str(params), NODE],
-        cwd=tmp_path,
-        capture_output=True,
-        text=True,
-        timeout=120,
-        env=dict(os.environ),
-    )
+    done = run_audit("--format", "json", "--params-file", str(params), NODE, cwd=tmp_path)
     assert done.returncode == 0, done.stdout + done.stderr
     report = strict(done.stdout)
     assert report["audited"] == [NODE]
