@@ -42,7 +42,7 @@ def server() -> Iterator[TuneServer]:
         tune = TuneServer(nodes=(NODE,))
         tune.start()
         try:
-            eventually(lambda: tune.graph.schema(NODE), timeout=20)
+            eventually(lambda: tune.graph.schema(NODE))
             yield tune
         finally:
             tune.stop()
