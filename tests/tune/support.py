@@ -40,9 +40,12 @@ def unique(stem: str) -> str:
     return f"{stem}_{os.getpid()}"
 
 
-def demo_nodes(*specs: str) -> AbstractContextManager[subprocess.Popen[str]]:
-    """The nodes of tests.tune.demo_nodes (NAME:KIND...) until the block ends."""
-    return node_process("tests.tune.demo_nodes", *specs)
+def demo_nodes(
+    *specs: str, ros_args: tuple[str, ...] = ()
+) -> AbstractContextManager[subprocess.Popen[str]]:
+    """The nodes of tests.tune.demo_nodes (NAME:KIND...), given ``ros_args``, until the block
+    ends."""
+    return node_process("tests.tune.demo_nodes", *specs, *(("--", *ros_args) if ros_args else ()))
 
 
 def run_audit(*args: str, cwd: Path = ROOT) -> subprocess.CompletedProcess[str]:
