@@ -263,8 +263,11 @@ def snapshot_never_torn(declared: Declared, seconds: float) -> Verdict:
     )
 
 
-def start_to_declared(prepared: Prepared, samples: int) -> Outcome:
-    """Whole processes (CPU time): start Python, init rclpy, make a node, import, declare, exit."""
+def probe_both(
+    prepared: Prepared, samples: int, measure: Callable[[list[str]], float]
+) -> dict[str, list[float]]:
+    """``measure`` of bench.memory_probe's arguments for each side, ``samples`` times, the
+    sides in turn (which goes first alternates, so neither gains from the other's caches)."""
     schema = prepared.schema
     directory = str(prepared.module_path.parent)
     write_bytecode(prepared.module_path.parent, schema.module_name, schema.plain_module_name)
@@ -272,15 +275,24 @@ def start_to_declared(prepared: Prepared, samples: int) -> Outcome:
         GENPARAMS: (schema.module_name, schema.class_name),
         PLAIN: (schema.plain_module_name, "-"),
     }
-    timed: dict[str, list[float]] = {GENPARAMS: [], PLAIN: []}
+    measured: dict[str, list[float]] = {GENPARAMS: [], PLAIN: []}
     for round_ in range(samples):
         order = list(sides) if round_ % 2 == 0 else list(sides)[::-1]
         for label in order:
             module, class_name = sides[label]
-            command = [sys.executable, "-m", "bench.memory_probe", directory, module, class_name]
-            timed[label].append(time_process([*command, "rss"])[0])
+            measured[label].append(measure([directory, module, class_name, "rss"]))
+    return measured
+
+
+def start_to_declared(prepared: Prepared, samples: int) -> Outcome:
+    """Whole processes (CPU time): start Python, init rclpy, make a node, import, declare, exit."""
+    timed = probe_both(
+        prepared,
+        samples,
+        lambda args: time_process([sys.executable, "-m", "bench.memory_probe", *args])[0],
+    )
     return Outcome(
-        f"whole process, start to declared, N={schema.size:,}",
+        f"whole process, start to declared, N={prepared.schema.size:,}",
         timed[GENPARAMS],
         timed[PLAIN],
         "s",
@@ -290,20 +302,11 @@ def start_to_declared(prepared: Prepared, samples: int) -> Outcome:
 
 
 def memory(prepared: Prepared, samples: int) -> Outcome:
-    schema = prepared.schema
-    directory = str(prepared.module_path.parent)
-    write_bytecode(prepared.module_path.parent, schema.module_name, schema.plain_module_name)
-    sides = {
-        GENPARAMS: (schema.module_name, schema.class_name),
-        PLAIN: (schema.plain_module_name, "-"),
-    }
-    grown: dict[str, list[float]] = {GENPARAMS: [], PLAIN: []}
-    for _ in range(samples):
-        for label, (module, class_name) in sides.items():
-            outcome = run_probe("bench.memory_probe", [directory, module, class_name, "rss"])
-            grown[label].append(float(outcome["bytes"]))
+    grown = probe_both(
+        prepared, samples, lambda args: float(run_probe("bench.memory_probe", args)["bytes"])
+    )
     return Outcome(
-        f"RSS growth, N={schema.size:,}",
+        f"RSS growth, N={prepared.schema.size:,}",
         grown[GENPARAMS],
         grown[PLAIN],
         "B",

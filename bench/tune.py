@@ -13,7 +13,6 @@ from __future__ import annotations
 import json
 import os
 import statistics
-import subprocess
 import sys
 import time
 import urllib.request
@@ -28,30 +27,13 @@ from playwright.sync_api import Page, sync_playwright
 from genparams.audit.walk import audit
 from genparams.tune.checking import json_parameter
 from genparams.tune.server import TuneServer
+from tests.tune.support import demo_nodes
 
 ROOT = Path(__file__).resolve().parent.parent
 REPORT = ROOT / "docs" / "benchmarks.md"
 START, END = "<!-- tune-bench:start -->", "<!-- tune-bench:end -->"
 CHROMIUM_ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--no-first-run"]
 REPEATS = 5
-
-
-@contextmanager
-def demo_nodes(*specs: str) -> Iterator[None]:
-    process = subprocess.Popen(
-        [sys.executable, "-m", "tests.tune.demo_nodes", *specs],
-        cwd=ROOT,
-        stdout=subprocess.PIPE,
-        text=True,
-    )
-    try:
-        assert process.stdout is not None
-        if process.stdout.readline().strip() != "ready":
-            raise RuntimeError("demo nodes did not start")
-        yield
-    finally:
-        process.terminate()
-        process.wait(timeout=10)
 
 
 def open_page(page: Page, url: str, node: str) -> tuple[float, float]:

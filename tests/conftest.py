@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 import os
-import random
 
-# Before rclpy is imported anywhere: discovery must never leave this machine.
+from tests.domains import hold_free_domain
+
+# Before rclpy is imported anywhere: discovery must never leave this machine, and no other
+# test run on it shares the domain.
 os.environ["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "LOCALHOST"
-os.environ.setdefault("ROS_DOMAIN_ID", str(random.SystemRandom().randint(1, 100)))
+if "ROS_DOMAIN_ID" not in os.environ:
+    os.environ["ROS_DOMAIN_ID"] = str(hold_free_domain())
 
 from collections.abc import Iterator
 

@@ -19,6 +19,10 @@ from typing import Any
 POLL_S = 1.0
 # However loaded the machine, a process gets no more than this many times its budget.
 MAX_STRETCH = 20.0
+# How long a test waits for a condition another process or discovery brings about (a node
+# appearing, a service answering, an event arriving). A wait ends as soon as the condition
+# holds, so this costs nothing when it passes: it is only how long a real failure takes.
+WAIT_S = 60.0
 
 
 def cpu_share() -> float:
@@ -26,6 +30,24 @@ def cpu_share() -> float:
     cores = os.cpu_count() or 1
     load = os.getloadavg()[0]
     return min(1.0, cores / load) if load > 0 else 1.0
+
+
+class Budget:
+    """Idle-machine seconds left of ``seconds``: :meth:`spent` says when they ran out."""
+
+    def __init__(self, seconds: float) -> None:
+        self.seconds = seconds
+        self.start = self.tick = time.monotonic()
+        self.used = 0.0
+
+    def spent(self) -> bool:
+        now = time.monotonic()
+        self.used += (now - self.tick) * cpu_share()
+        self.tick = now
+        return self.used > self.seconds or self.wall() > self.seconds * MAX_STRETCH
+
+    def wall(self) -> float:
+        return time.monotonic() - self.start
 
 
 def run_patiently(
@@ -44,23 +66,20 @@ def run_patiently(
         start_new_session=True,
         **popen_kwargs,
     )
-    start = time.monotonic()
-    spent = 0.0
+    budget = Budget(budget_s)
     try:
         while True:
-            tick = time.monotonic()
             try:
                 stdout, stderr = process.communicate(timeout=POLL_S)
                 break
             except subprocess.TimeoutExpired:
-                spent += (time.monotonic() - tick) * cpu_share()
-                wall = time.monotonic() - start
-                if spent > budget_s or wall > budget_s * MAX_STRETCH:
+                if budget.spent():
                     os.killpg(process.pid, signal.SIGKILL)
                     stdout, stderr = process.communicate()
                     raise TimeoutError(
-                        f"{args[0]} ran out of its {budget_s:g} s budget ({wall:.0f} s wall, "
-                        f"load {os.getloadavg()[0]:.1f}); stderr:\n{stderr}"
+                        f"{args[0]} ran out of its {budget_s:g} s budget "
+                        f"({budget.wall():.0f} s wall, load {os.getloadavg()[0]:.1f});"
+                        f" stderr:\n{stderr}"
                     ) from None
     finally:
         if process.poll() is None:

@@ -20,6 +20,7 @@ from rclpy.parameter_client import AsyncParameterClient
 from rclpy.task import Future
 
 import genparams
+from tests.patience import WAIT_S
 
 ROOT = Path(__file__).resolve().parent.parent
 CASES = Path(__file__).resolve().parent / "cases"
@@ -59,7 +60,7 @@ class RosHarness:
     def client(self, node: Node) -> ServiceClient:
         return ServiceClient(self, node.get_fully_qualified_name())
 
-    def wait(self, future: Future, timeout: float = 10.0) -> Any:
+    def wait(self, future: Future, timeout: float = WAIT_S) -> Any:
         self.executor.spin_until_future_complete(future, timeout_sec=timeout)
         if not future.done():
             raise TimeoutError("service call did not complete")
@@ -81,7 +82,7 @@ class RosHarness:
 class ServiceClient:
     """What `ros2 param` sees: calls through the node's parameter services."""
 
-    def __init__(self, harness: RosHarness, target: str, timeout: float = 30.0) -> None:
+    def __init__(self, harness: RosHarness, target: str, timeout: float = WAIT_S) -> None:
         self.harness = harness
         self.client = AsyncParameterClient(harness.client_node, target)
         # By the clock: spin_once returns early whenever any callback ran, so a count
@@ -93,7 +94,7 @@ class ServiceClient:
             harness.executor.spin_once(timeout_sec=0.1)
         self._first_answer(target)
 
-    def _first_answer(self, target: str, timeout: float = 30.0) -> None:
+    def _first_answer(self, target: str, timeout: float = WAIT_S) -> None:
         """Wait until a call is answered. A service can be ready before its reply path
         to this client is matched; a request sent then goes unanswered, so ask again."""
         deadline = time.monotonic() + timeout

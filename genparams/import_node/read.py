@@ -9,7 +9,7 @@ from rcl_interfaces.srv import DescribeParameters, GetParameters, ListParameters
 
 from genparams.import_node.convert import NOT_SET, Reported
 from genparams.tune.graph import Graph
-from genparams.tune.reader import python_value, wait_future
+from genparams.tune.reader import answers, python_value
 
 
 def read_node(node: str, timeout: float) -> list[Reported]:
@@ -21,12 +21,21 @@ def read_node(node: str, timeout: float) -> list[Reported]:
         reader = graph.reader(node)
         if not reader.wait_ready(timeout):
             raise TimeoutError(f"{node}: parameter services did not appear in {timeout:g} s")
-        listing = reader.lister.call_async(ListParameters.Request(depth=0))
-        names = sorted(wait_future(listing, timeout).result.names)
-        getting = reader.getter.call_async(GetParameters.Request(names=names))
-        describing = reader.describer.call_async(DescribeParameters.Request(names=names))
-        values = list(wait_future(getting, timeout).values)
-        descriptors = wait_future(describing, timeout).descriptors
+        # A service is ready before its replies to a new client can arrive: the first
+        # requests are sent again until answered.
+        listing = answers(
+            [lambda: reader.lister.call_async(ListParameters.Request(depth=0))], timeout
+        )
+        names = sorted(listing[0].result.names)
+        got, described = answers(
+            [
+                lambda: reader.getter.call_async(GetParameters.Request(names=names)),
+                lambda: reader.describer.call_async(DescribeParameters.Request(names=names)),
+            ],
+            timeout,
+        )
+        values = list(got.values)
+        descriptors = described.descriptors
         if len(values) != len(names):
             # rclpy answers a get naming a parameter declared by type only, with no value
             # yet, with no values at all: ask one name at a time, that one reads as unset.
@@ -37,8 +46,8 @@ def read_node(node: str, timeout: float) -> list[Reported]:
 
 
 def _value(getter: Any, name: str, timeout: float) -> Any:
-    answer = wait_future(getter.call_async(GetParameters.Request(names=[name])), timeout)
-    return answer.values[0] if answer.values else ParameterValue(type=NOT_SET)
+    asked = answers([lambda: getter.call_async(GetParameters.Request(names=[name]))], timeout)
+    return asked[0].values[0] if asked[0].values else ParameterValue(type=NOT_SET)
 
 
 def _reported(name: str, value: Any, descriptor: Any) -> Reported:

@@ -172,8 +172,11 @@ def values_or_unset(
     declared by type only and not set, each name's value asked alone (unset: NOT_SET)."""
     if len(values) == len(names):
         return values
-    alone = [reader.getter.call_async(GetParameters.Request(names=[name])) for name in names]
-    replies = [wait_future(future, timeout).values for future in alone]
+
+    def alone(name: str) -> Callable[[], Future]:
+        return lambda: reader.getter.call_async(GetParameters.Request(names=[name]))
+
+    replies = [answer.values for answer in answers([alone(name) for name in names], timeout)]
     return [reply[0] if reply else ParameterValue() for reply in replies]
 
 

@@ -10,9 +10,10 @@ import sys
 
 import rclpy
 from rcl_interfaces.msg import FloatingPointRange, IntegerRange, ParameterDescriptor
-from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.parameter import Parameter
+
+from tests.node_process import serve
 
 
 def driver(name: str) -> Node:
@@ -86,18 +87,14 @@ def lossy(name: str) -> Node:
 KINDS = {"driver": driver, "dynamic": dynamic, "lossy": lossy}
 
 
-def main(specs: list[str]) -> None:
+def main(specs: list[str]) -> int:
     rclpy.init()
-    executor = SingleThreadedExecutor()
+    nodes = []
     for spec in specs:
         name, _, kind = spec.partition(":")
-        executor.add_node(KINDS[kind](name))
-    print("ready", flush=True)
-    try:
-        executor.spin()
-    except (KeyboardInterrupt, ExternalShutdownException):
-        pass
+        nodes.append(KINDS[kind](name))
+    return serve(nodes)
 
 
 if __name__ == "__main__":
-    main(sys.argv[1:])
+    sys.exit(main(sys.argv[1:]))

@@ -13,16 +13,18 @@ import yaml
 from rclpy.parameter import parameter_value_to_python
 
 from genparams.runtime.core.naming import NODE_PARAMETERS
+from tests.node_process import node_process
+from tests.patience import WAIT_S, run_patiently
 from tests.support import ROOT, RosHarness, ServiceClient, load_generated
-from tests.tune.support import demo_nodes, unique
+from tests.tune.support import unique
 
 NODES = "tests.import_node.hand_written_nodes"
 FIELDS = ("type", "description", "additional_constraints", "read_only", "dynamic_typing")
 
 
 def import_node(node: str, *args: str) -> subprocess.CompletedProcess[str]:
-    command = [sys.executable, "-m", "genparams", "import-node", node, "--timeout", "30", *args]
-    return subprocess.run(command, cwd=ROOT, capture_output=True, text=True, timeout=120)
+    command = [sys.executable, "-m", "genparams", "import-node", node, "--timeout", f"{WAIT_S:g}"]
+    return run_patiently([*command, *args], budget_s=2 * WAIT_S, cwd=ROOT)
 
 
 def _ranges(descriptor: Any) -> list[tuple[Any, ...]]:
@@ -53,7 +55,7 @@ def test_generated_class_reproduces_every_descriptor(
     kind: str, parameters: int, ros: RosHarness, tmp_path: Path
 ) -> None:
     node = f"/{unique(kind)}"
-    with demo_nodes(f"{node[1:]}:{kind}", module=NODES):
+    with node_process(NODES, f"{node[1:]}:{kind}"):
         done = import_node(node, "-o", str(tmp_path / f"{kind}.yaml"))
         assert done.returncode == 0, done.stderr
         remote = ServiceClient(ros, node)
@@ -82,7 +84,7 @@ def _list(client: Any) -> list[str]:
 
 def test_optional_and_dynamically_typed_parameters_import_as_such(tmp_path: Path) -> None:
     node = f"/{unique('dynamic')}"
-    with demo_nodes(f"{node[1:]}:dynamic", module=NODES):
+    with node_process(NODES, f"{node[1:]}:dynamic"):
         done = import_node(node)
     assert done.returncode == 0, done.stderr
     assert "warning" not in done.stderr

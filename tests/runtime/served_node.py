@@ -4,7 +4,6 @@
 from __future__ import annotations
 
 import threading
-import time
 from collections.abc import Iterator
 from contextlib import contextmanager
 from typing import Any
@@ -14,7 +13,9 @@ from rclpy.context import Context
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 
+from genparams.audit.walk import AuditResult, audit
 from genparams.tune.graph import Graph
+from tests.patience import WAIT_S
 from tests.support import unique_name
 
 
@@ -39,13 +40,12 @@ def served(params_cls: Any, args: list[str]) -> Iterator[str]:
         rclpy.shutdown(context=context)
 
 
-def first_read(graph: Graph, node: str, timeout: float = 30.0) -> list[dict[str, Any]]:
-    """A service can be ready before its reply path to this client is matched, and a
-    request sent then goes unanswered: ask again until one is answered."""
-    deadline = time.monotonic() + timeout
-    while True:
-        try:
-            return graph.read_node(node, timeout=2.0)
-        except TimeoutError:
-            if time.monotonic() > deadline:
-                raise
+def first_read(graph: Graph, node: str) -> list[dict[str, Any]]:
+    """Every parameter of ``node`` once its services appear (requests unanswered because the
+    reply path to a new client was not matched yet are sent again)."""
+    return graph.read_node(node, timeout=WAIT_S)
+
+
+def audit_served(graph: Graph, node: str) -> AuditResult:
+    """The audit of one node that publishes a schema: each wait ends when discovery does."""
+    return audit(graph, only=[node], settle=WAIT_S, timeout=WAIT_S)

@@ -14,11 +14,11 @@ from rclpy.node import Node
 from rclpy.parameter import Parameter
 
 from genparams.audit.findings import VIOLATION
-from genparams.audit.walk import audit
 from genparams.runtime import ParameterDeclarationError
 from genparams.tune.graph import Graph
 from tests.golden import CASES
-from tests.runtime.served_node import first_read, served
+from tests.patience import WAIT_S
+from tests.runtime.served_node import audit_served, first_read, served
 from tests.support import RosHarness, import_file, unique_name
 
 NAMES = ("gain", "filter.window", "filter.kind")
@@ -110,9 +110,9 @@ def test_tune_and_audit(module: types.ModuleType) -> None:
     graph = Graph(unique_name("conditional_graph"))
     try:
         with served(module.ConditionalParams, ["-p", "mode:=expert"]) as target:
-            assert graph.services_ready(target, 10.0)
+            assert graph.services_ready(target, WAIT_S)
             read = {p["name"]: p["value"] for p in first_read(graph, target)}
-            result = audit(graph, only=[target], settle=0.3, timeout=10.0)
+            result = audit_served(graph, target)
     finally:
         graph.close()
     assert read["gain"] == 1.0 and "filter.window" not in read

@@ -15,11 +15,11 @@ from rclpy.node import Node
 from rclpy.parameter import Parameter
 
 from genparams.audit.findings import DRIFT_DEFAULT, VIOLATION
-from genparams.audit.walk import audit
 from genparams.runtime import ParameterDeclarationError
 from genparams.tune.graph import Graph
 from tests.golden import CASES
-from tests.runtime.served_node import first_read, served
+from tests.patience import WAIT_S
+from tests.runtime.served_node import audit_served, first_read, served
 from tests.support import RosHarness, import_file, unique_name
 
 ARG = ["-p", "plugin.arg:=[a, b]"]
@@ -118,9 +118,9 @@ def test_tune_and_audit_read_the_live_type(module: types.ModuleType) -> None:
     graph = Graph(unique_name("dynamic_graph"))
     try:
         with served(module.DynamicParams, [*ARG, "-p", "threshold:=0.5"]) as target:
-            assert graph.services_ready(target, 10.0)
+            assert graph.services_ready(target, WAIT_S)
             read = {p["name"]: p for p in first_read(graph, target)}
-            result = audit(graph, only=[target], settle=0.3, timeout=10.0)
+            result = audit_served(graph, target)
     finally:
         graph.close()
     assert (read["threshold"]["type"], read["threshold"]["value"]) == ("double", 0.5)

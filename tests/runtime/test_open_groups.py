@@ -17,11 +17,11 @@ from rclpy.node import Node
 from rclpy.parameter import Parameter
 
 from genparams.audit.findings import VIOLATION
-from genparams.audit.walk import audit
 from genparams.runtime import ParameterDeclarationError
 from genparams.tune.graph import Graph
 from tests.golden import CASES
-from tests.runtime.served_node import served
+from tests.patience import WAIT_S
+from tests.runtime.served_node import audit_served, served
 from tests.support import RosHarness, import_file, unique_name
 
 PARAMS = """\
@@ -188,8 +188,8 @@ def test_audit_checks_each_entry(module: types.ModuleType, tmp_path: Path) -> No
     graph = Graph(unique_name("open_groups_graph"))
     try:
         with served(module.OpenGroupsParams, params_file(tmp_path)) as target:
-            assert graph.services_ready(target, 10.0)
-            result = audit(graph, only=[target], settle=0.3, timeout=10.0)
+            assert graph.services_ready(target, WAIT_S)
+            result = audit_served(graph, target)
     finally:
         graph.close()
     assert target in result.audited

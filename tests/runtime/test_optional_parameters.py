@@ -16,11 +16,11 @@ from rclpy.node import Node
 from rclpy.parameter import Parameter
 
 from genparams.audit.findings import VIOLATION
-from genparams.audit.walk import audit
 from genparams.runtime import ParameterDeclarationError
 from genparams.tune.graph import Graph
 from tests.golden import CASES
-from tests.runtime.served_node import first_read, served
+from tests.patience import WAIT_S
+from tests.runtime.served_node import audit_served, first_read, served
 from tests.support import RosHarness, import_file, unique_name
 
 OPTIONAL = ("frame_id", "timeout", "retries", "verbose", "topics", "mask", "limits.speed")
@@ -153,11 +153,11 @@ def target(module: types.ModuleType) -> Iterator[str]:
 def test_tune_and_audit_read_not_set(target: str) -> None:
     graph = Graph(unique_name("optional_graph"))
     try:
-        assert graph.services_ready(target, 10.0)
+        assert graph.services_ready(target, WAIT_S)
         read = {p["name"]: p for p in first_read(graph, target)}
         assert (read["frame_id"]["type"], read["frame_id"]["value"]) == ("unset", None)
         assert (read["retries"]["type"], read["retries"]["value"]) == ("int", 3)
-        result = audit(graph, only=[target], settle=0.3, timeout=10.0)
+        result = audit_served(graph, target)
     finally:
         graph.close()
     assert target in result.audited

@@ -15,11 +15,11 @@ from rclpy.node import Node
 from rclpy.parameter import Parameter
 
 from genparams.audit.findings import VIOLATION
-from genparams.audit.walk import audit
 from genparams.runtime import ParameterDeclarationError
 from genparams.tune.graph import Graph
 from tests.golden import CASES
-from tests.runtime.served_node import first_read, served
+from tests.patience import WAIT_S
+from tests.runtime.served_node import audit_served, first_read, served
 from tests.support import RosHarness, import_file, unique_name
 
 
@@ -109,9 +109,9 @@ def test_tune_and_audit_name_each_item(module: types.ModuleType) -> None:
     graph = Graph(unique_name("per_item_graph"))
     try:
         with served(module.PerItemParams, ["-p", "offsets.elbow:=0.5"]) as target:
-            assert graph.services_ready(target, 10.0)
+            assert graph.services_ready(target, WAIT_S)
             read = {p["name"]: p["value"] for p in first_read(graph, target)}
-            result = audit(graph, only=[target], settle=0.3, timeout=10.0)
+            result = audit_served(graph, target)
     finally:
         graph.close()
     assert (read["offsets.elbow"], read["imu"], read["limits.shoulder"]) == (0.5, "", [-1.0, 1.0])

@@ -16,11 +16,11 @@ from typing import Any
 
 import rclpy
 from rcl_interfaces.msg import FloatingPointRange, IntegerRange, ParameterDescriptor
-from rclpy.executors import MultiThreadedExecutor
 from rclpy.node import Node
 
 import genparams
 from tests.edge_values import SCHEMA as EDGES_SCHEMA
+from tests.node_process import serve
 from tests.support import ROOT, import_file
 
 SCHEMAS = {
@@ -156,9 +156,8 @@ def main(argv: list[str]) -> int:
     if "--" in argv:
         specs, ros_args = argv[: argv.index("--")], argv[argv.index("--") + 1 :]
     rclpy.init()
-    executor = MultiThreadedExecutor()
     workdir = Path(tempfile.mkdtemp(prefix="genparams-demo-"))
-    keep = []
+    nodes, keep = [], []
     for spec in specs:
         name, _, kind = spec.partition(":")
         if kind == "plain":
@@ -170,13 +169,8 @@ def main(argv: list[str]) -> int:
             own = ["-p", "serial:=CAM12345"] if kind == "camera" else []
             node = Node(name, cli_args=["--ros-args", *own, *ros_args])
             keep.append(params_class(kind, workdir).declare(node))
-        executor.add_node(node)
-    print("ready", flush=True)
-    try:
-        executor.spin()
-    except (KeyboardInterrupt, rclpy.executors.ExternalShutdownException):
-        pass
-    return 0
+        nodes.append(node)
+    return serve(nodes)
 
 
 if __name__ == "__main__":

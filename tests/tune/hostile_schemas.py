@@ -13,30 +13,23 @@ import sys
 from pathlib import Path
 
 import rclpy
-from rclpy.executors import MultiThreadedExecutor
 from rclpy.node import Node
 from std_msgs.msg import String
 
 from genparams.tune.graph import SCHEMA_QOS
+from tests.node_process import serve
 
 
 def main(argv: list[str]) -> int:
     entries = json.loads(Path(argv[0]).read_text(encoding="utf-8"))
     rclpy.init()
-    executor = MultiThreadedExecutor()
-    keep = []
+    nodes = []
     for entry in entries:
         node = Node(entry["node"])
         publisher = node.create_publisher(String, entry["topic"], SCHEMA_QOS)
         publisher.publish(String(data=entry["text"]))
-        keep.append(publisher)
-        executor.add_node(node)
-    print("ready", flush=True)
-    try:
-        executor.spin()
-    except (KeyboardInterrupt, rclpy.executors.ExternalShutdownException):
-        pass
-    return 0
+        nodes.append(node)
+    return serve(nodes)
 
 
 if __name__ == "__main__":

@@ -8,12 +8,17 @@ import os
 import subprocess
 import sys
 import time
-from collections.abc import Callable, Iterator
-from contextlib import contextmanager
+from collections.abc import Callable
+from contextlib import AbstractContextManager
+from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from playwright.sync_api import Locator, Page, expect
+
 from genparams.runtime.core.json_codec import dumps
-from tests.support import ROOT
+from tests.node_process import node_process
+from tests.patience import WAIT_S, run_patiently
+from tests.support import ROOT, RosHarness, ServiceClient
 
 if TYPE_CHECKING:
     from genparams.tune.server import TuneServer
@@ -35,34 +40,23 @@ def unique(stem: str) -> str:
     return f"{stem}_{os.getpid()}"
 
 
-@contextmanager
 def demo_nodes(
-    *specs: str, ros_args: tuple[str, ...] = (), module: str = "tests.tune.demo_nodes"
-) -> Iterator[subprocess.Popen[str]]:
-    """``python -m MODULE NAME:KIND...`` until the block ends (MODULE prints "ready")."""
-    command = [sys.executable, "-m", module, *specs]
-    if ros_args:
-        command += ["--", *ros_args]
-    process = subprocess.Popen(
-        command, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
-    )
-    try:
-        assert process.stdout is not None
-        line = process.stdout.readline()  # blocks until the nodes are declared
-        if line.strip() != "ready":
-            process.kill()
-            raise RuntimeError(f"demo nodes failed: {line}{process.communicate()[1]}")
-        yield process
-    finally:
-        process.terminate()
-        try:
-            process.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            process.kill()
-            process.wait()
+    *specs: str, ros_args: tuple[str, ...] = ()
+) -> AbstractContextManager[subprocess.Popen[str]]:
+    """The nodes of tests.tune.demo_nodes (NAME:KIND...), given ``ros_args``, until the block
+    ends."""
+    return node_process("tests.tune.demo_nodes", *specs, *(("--", *ros_args) if ros_args else ()))
 
 
-def eventually(probe: Callable[[], Any], timeout: float = 10.0, interval: float = 0.05) -> Any:
+def run_audit(*args: str, cwd: Path = ROOT) -> subprocess.CompletedProcess[str]:
+    """``genparams audit ARGS`` on nodes that all publish a schema: its waits (discovery, the
+    schema topics, the answers) end as soon as discovery does, however long that takes."""
+    wait = f"{WAIT_S:g}"
+    command = [sys.executable, "-m", "genparams", "audit", "--settle", wait, "--timeout", wait]
+    return run_patiently([*command, *args], budget_s=2 * WAIT_S, cwd=cwd)
+
+
+def eventually(probe: Callable[[], Any], timeout: float = WAIT_S, interval: float = 0.05) -> Any:
     """Poll ``probe`` until it returns a true value; its last value on timeout fails."""
     deadline = time.monotonic() + timeout
     while True:
@@ -140,3 +134,27 @@ def api_call(server: TuneServer, path: str, body: Any = None) -> Answer:
         body = dumps(body).encode("ascii")
     method = "GET" if body is None else "POST"
     return http_call(server.port, method, path, body=body, token=server.token)
+
+
+def open_node(page: Page, server: TuneServer, node: str) -> None:
+    """Open the page, then ``node`` from the list, as a user does; return once its form shows
+    and the page listens to the server's events (a change made before is in the form)."""
+    page.goto(server.url)
+    page.locator(f'[data-node-link="{node}"] a').click()
+    expect(page.locator(f'form[data-node="{node}"]')).to_be_visible()
+    expect(page.locator("body[data-listening]")).to_be_attached()
+
+
+def error(page: Page, name: str) -> Locator:
+    """Where the page says why a parameter's value is refused."""
+    return page.locator(f'[data-param-error="{name}"]')
+
+
+_CLIENTS: dict[str, ServiceClient] = {}
+
+
+def service_client(ros_harness: RosHarness, node: str) -> ServiceClient:
+    """One parameter client per node for the session: each opens six service clients."""
+    if node not in _CLIENTS:
+        _CLIENTS[node] = ServiceClient(ros_harness, node)
+    return _CLIENTS[node]

@@ -15,21 +15,23 @@ from collections.abc import Iterator
 from typing import Any
 
 import pytest
-from playwright.sync_api import Browser, Page, Route, expect, sync_playwright
+from playwright.sync_api import Page, Route, expect
 from rcl_interfaces.msg import SetParametersResult
 from rclpy.parameter import Parameter
 
 from genparams.tune.server import TuneServer
 from tests.edge_values import EDGES, SCALAR_EDGES, TOLERANCE, Edge
+from tests.patience import WAIT_S
 from tests.support import RosHarness, ServiceClient
 from tests.tune.support import (
-    CHROMIUM,
-    CHROMIUM_ARGS,
     api_call,
     demo_nodes,
+    error,
     eventually,
+    service_client,
     unique,
 )
+from tests.tune.support import open_node as open_in_page
 
 EDGES_NODE, CHECKS_NODE, ARM_NODE = (
     f"/{unique(s)}" for s in ("check_edges", "check_rules", "check_arm")
@@ -47,35 +49,11 @@ def nodes() -> Iterator[None]:
 def server(nodes: None) -> Iterator[TuneServer]:
     tune = TuneServer(nodes=(EDGES_NODE, CHECKS_NODE, ARM_NODE), trusted_packages=TRUSTED)
     tune.start()
-    tune.graph.wait_for_schemas([EDGES_NODE, CHECKS_NODE, ARM_NODE], timeout=10.0)
+    tune.graph.wait_for_schemas([EDGES_NODE, CHECKS_NODE, ARM_NODE], timeout=WAIT_S)
     try:
         yield tune
     finally:
         tune.stop()
-
-
-@pytest.fixture(scope="module")
-def browser() -> Iterator[Browser]:
-    with sync_playwright() as playwright:
-        launched = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
-        yield launched
-        launched.close()
-
-
-@pytest.fixture
-def page(browser: Browser) -> Iterator[Page]:
-    opened = browser.new_page(viewport={"width": 1200, "height": 1000})
-    yield opened
-    opened.close()
-
-
-_CLIENTS: dict[str, ServiceClient] = {}
-
-
-def client(ros_harness: RosHarness, node: str) -> ServiceClient:
-    if node not in _CLIENTS:
-        _CLIENTS[node] = ServiceClient(ros_harness, node)
-    return _CLIENTS[node]
 
 
 def post(server: TuneServer, path: str, body: Any) -> tuple[int, dict[str, Any]]:
@@ -121,7 +99,7 @@ def test_the_check_route_gives_the_node_verdict(
     edge: Edge, server: TuneServer, ros_harness: RosHarness
 ) -> None:
     answer = check(server, EDGES_NODE, (edge.name, edge.value))
-    node = node_verdict(client(ros_harness, EDGES_NODE), (edge.name, edge.value))
+    node = node_verdict(service_client(ros_harness, EDGES_NODE), (edge.name, edge.value))
     assert node.successful == edge.accepted, node.reason
     same_verdict(answer, node)
     (result,) = answer["results"]
@@ -147,7 +125,7 @@ def test_mapped_entries_and_old_names_answer_as_the_node(
     edits: list[tuple[str, Any]], server: TuneServer, ros_harness: RosHarness
 ) -> None:
     answer = check(server, ARM_NODE, *edits)
-    same_verdict(answer, node_verdict(client(ros_harness, ARM_NODE), *edits))
+    same_verdict(answer, node_verdict(service_client(ros_harness, ARM_NODE), *edits))
 
 
 # A representative subset through the real page: edges and sides of each kind of check.
@@ -173,9 +151,8 @@ PAGE_EDGES = [
 
 
 def open_node(page: Page, server: TuneServer, node: str, live: bool = True) -> None:
-    page.goto(server.url)
-    page.locator(f'[data-node-link="{node}"] a').click()
-    expect(page.locator(f'form[data-node="{node}"]')).to_be_visible(timeout=10_000)
+    """The node's form; with ``live`` off, edits wait for Apply."""
+    open_in_page(page, server, node)
     if not live:
         page.locator("#live").uncheck()
 
@@ -193,16 +170,12 @@ def row(page: Page, name: str):  # type: ignore[no-untyped-def]
     return page.locator(f'[data-row="{name}"]')
 
 
-def error(page: Page, name: str):  # type: ignore[no-untyped-def]
-    return page.locator(f'[data-param-error="{name}"]')
-
-
 SETTLED = re.compile("^(ok|refused)$")
 
 
 def shown_verdict(page: Page, name: str) -> tuple[bool, str | None]:
     """The verdict a row shows once the server answered: ok, or refused and why."""
-    expect(row(page, name)).to_have_attribute("data-verdict", SETTLED, timeout=10_000)
+    expect(row(page, name)).to_have_attribute("data-verdict", SETTLED)
     verdict = row(page, name).get_attribute("data-verdict")
     return verdict == "ok", error(page, name).text_content() or None
 
@@ -219,7 +192,7 @@ def test_the_page_shows_the_node_verdict(
     open_node(page, server, EDGES_NODE, live=False)
     enter(page, edge.name, repr(edge.value) if not isinstance(edge.value, str) else edge.value)
     shown = shown_verdict(page, edge.name)
-    node = node_verdict(client(ros_harness, EDGES_NODE), (edge.name, edge.value))
+    node = node_verdict(service_client(ros_harness, EDGES_NODE), (edge.name, edge.value))
     assert shown == (node.successful, node.reason or None)
     assert node.successful == edge.accepted
 
@@ -234,7 +207,7 @@ def test_values_the_node_accepts_pass_the_check(
     name: str, value: Any, server: TuneServer, ros_harness: RosHarness
 ) -> None:
     answer = check(server, CHECKS_NODE, (name, value))
-    node = node_verdict(client(ros_harness, CHECKS_NODE), (name, value))
+    node = node_verdict(service_client(ros_harness, CHECKS_NODE), (name, value))
     assert node.successful, node.reason
     same_verdict(answer, node)
 
@@ -242,7 +215,7 @@ def test_values_the_node_accepts_pass_the_check(
 def test_the_page_applies_values_the_node_accepts(
     page: Page, server: TuneServer, ros_harness: RosHarness
 ) -> None:
-    remote = client(ros_harness, CHECKS_NODE)
+    remote = service_client(ros_harness, CHECKS_NODE)
     before = remote.get(*(n for n, _ in ACCEPTED_BY_THE_NODE))
     open_node(page, server, CHECKS_NODE)
     try:
@@ -262,7 +235,7 @@ def test_the_page_applies_values_the_node_accepts(
 def test_rules_and_custom_validators_answer_as_the_node(
     server: TuneServer, ros_harness: RosHarness
 ) -> None:
-    remote = client(ros_harness, CHECKS_NODE)
+    remote = service_client(ros_harness, CHECKS_NODE)
     for edits in (
         [("low", 9)],
         [("low", 4), ("high", 3)],
@@ -296,7 +269,7 @@ def test_a_custom_validator_the_server_cannot_run_is_left_to_the_node(
     assert "node_only_checks:is_short" in note
     assert "checked by the node on apply" in note
     assert "does not import here" in note
-    refused = node_verdict(client(ros_harness, CHECKS_NODE), ("short", "abcd"))
+    refused = node_verdict(service_client(ros_harness, CHECKS_NODE), ("short", "abcd"))
     assert not refused.successful
     assert refused.reason == "short: 'abcd' is longer than 3 (node_only_checks:is_short)"
     untrusting = TuneServer(graph=server.graph)  # the default: no module is trusted
@@ -314,7 +287,7 @@ def test_a_custom_validator_the_server_cannot_run_is_left_to_the_node(
 def test_rules_and_custom_validators_show_in_the_page_before_apply(
     page: Page, server: TuneServer, ros_harness: RosHarness
 ) -> None:
-    remote = client(ros_harness, CHECKS_NODE)
+    remote = service_client(ros_harness, CHECKS_NODE)
     open_node(page, server, CHECKS_NODE, live=False)
     enter(page, "low", "9")
     (high,) = remote.get("high")
@@ -345,7 +318,7 @@ def test_the_node_reason_shows_for_what_only_the_node_checks(
     expect(error(page, "short")).to_have_text(
         "short: 'abcd' is longer than 3 (node_only_checks:is_short)"
     )
-    assert client(ros_harness, CHECKS_NODE).get("short") == ["ab"]
+    assert service_client(ros_harness, CHECKS_NODE).get("short") == ["ab"]
 
 
 # Values of the wrong JSON type ----------------------------------------------------------
@@ -370,7 +343,7 @@ def test_values_of_the_wrong_json_type_are_refused(
     server: TuneServer,
     ros_harness: RosHarness,
 ) -> None:
-    remote = client(ros_harness, CHECKS_NODE)
+    remote = service_client(ros_harness, CHECKS_NODE)
     before = remote.get(name)
     body = {"node": CHECKS_NODE, "params": [{"name": name, "type": type_name, "value": value}]}
     status, answer = post(server, "api/set", body)
@@ -385,7 +358,7 @@ def test_values_of_the_wrong_json_type_are_refused(
 def test_a_double_may_be_written_without_a_fraction(
     server: TuneServer, ros_harness: RosHarness
 ) -> None:
-    remote = client(ros_harness, CHECKS_NODE)
+    remote = service_client(ros_harness, CHECKS_NODE)
     body = {"node": CHECKS_NODE, "params": [{"name": "share", "type": "double", "value": 1}]}
     try:
         status, answer = post(server, "api/set", body)
@@ -408,7 +381,7 @@ def test_an_integer_typed_with_a_fraction_is_refused_in_the_page(
     expect(error(page, "even")).to_have_text(
         "even: integer 9223372036854775808 does not fit in int64"
     )
-    assert client(ros_harness, CHECKS_NODE).get("low", "high", "even") == [1, 5, 2]
+    assert service_client(ros_harness, CHECKS_NODE).get("low", "high", "even") == [1, 5, 2]
 
 
 # A change made while the page's own apply is in flight -----------------------------------
@@ -417,7 +390,7 @@ def test_an_integer_typed_with_a_fraction_is_refused_in_the_page(
 def test_a_change_during_the_apply_ends_in_the_form(
     page: Page, server: TuneServer, ros_harness: RosHarness
 ) -> None:
-    remote = client(ros_harness, CHECKS_NODE)
+    remote = service_client(ros_harness, CHECKS_NODE)
     held: list[Route] = []
     open_node(page, server, CHECKS_NODE, live=False)
     page.route("**/api/set", lambda route: held.append(route))  # held until let go
@@ -444,7 +417,7 @@ def test_a_change_during_the_apply_ends_in_the_form(
 def test_a_parameter_the_node_does_not_declare_answers_as_the_node(
     server: TuneServer, ros_harness: RosHarness
 ) -> None:
-    remote = client(ros_harness, CHECKS_NODE)
+    remote = service_client(ros_harness, CHECKS_NODE)
     for edits in ([("no_such", 1)], [("low", 2), ("no_such", 1), ("nor_this", 2)]):
         params = [{"name": n, "type": "int", "value": v} for n, v in edits]
         status, answer = post(server, "api/check", {"node": CHECKS_NODE, "params": params})

@@ -10,9 +10,6 @@ from __future__ import annotations
 
 import json
 import math
-import os
-import subprocess
-import sys
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -24,6 +21,7 @@ from genparams.runtime.core.json_codec import loads
 from genparams.runtime.core.spec import compile_schema
 from genparams.runtime.node.schema_topic import SCHEMA_TOPIC_SUFFIX, class_text, node_message_text
 from genparams.tune.server import TuneServer
+from tests.node_process import node_process
 from tests.support import ROOT, load_generated
 from tests.tune.support import (
     CHROMIUM,
@@ -31,6 +29,7 @@ from tests.tune.support import (
     api_call,
     demo_nodes,
     eventually,
+    run_audit,
     unique,
 )
 
@@ -79,19 +78,11 @@ def graph_with_hostiles(tmp_path_factory: pytest.TempPathFactory) -> Iterator[No
     workdir = tmp_path_factory.mktemp("hostile")
     spec_file = workdir / "hostile.json"
     spec_file.write_text(json.dumps(hostile_entries(workdir)), encoding="utf-8")
-    command = [sys.executable, "-m", "tests.tune.hostile_schemas", str(spec_file)]
-    with demo_nodes(f"{CAM[1:]}:camera", f"{PLAIN[1:]}:plain"):
-        hostile = subprocess.Popen(command, cwd=ROOT, stdout=subprocess.PIPE, text=True)
-        try:
-            assert hostile.stdout is not None and hostile.stdout.readline().strip() == "ready"
-            yield
-        finally:
-            hostile.terminate()
-            try:
-                hostile.wait(timeout=30)
-            except subprocess.TimeoutExpired:  # a loaded machine: stop it the hard way
-                hostile.kill()
-                hostile.wait()
+    with (
+        demo_nodes(f"{CAM[1:]}:camera", f"{PLAIN[1:]}:plain"),
+        node_process("tests.tune.hostile_schemas", str(spec_file)),
+    ):
+        yield
 
 
 @pytest.fixture(scope="module")
@@ -128,7 +119,7 @@ def test_tuning_shows_each_bad_schema_as_a_problem_and_tunes_the_good_node(
         arrived = all(part in (problems.get(node) or "") for node, part in EXPECTED.items())
         return problems if arrived else None
 
-    problems = eventually(all_arrived, timeout=20)
+    problems = eventually(all_arrived)
     assert problems[CAM] is None
 
     # The executor survived every message: the good node reads and sets as before.
@@ -154,17 +145,17 @@ def test_tuning_shows_each_bad_schema_as_a_problem_and_tunes_the_good_node(
 
 
 def test_the_page_shows_the_problem(server: TuneServer) -> None:
-    eventually(lambda: listed_problems(server).get(SPOOFER), timeout=20)
+    eventually(lambda: listed_problems(server).get(SPOOFER))
     with sync_playwright() as playwright:
         browser = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
         try:
             page = browser.new_page()
             page.goto(server.url + f"#{SPOOFER}")
             problem = page.locator("[data-schema-problem]")
-            expect(problem).to_be_visible(timeout=10_000)
+            expect(problem).to_be_visible()
             expect(problem).to_contain_text(EXPECTED[SPOOFER])
             badge = page.locator(f'[data-node-link="{SPOOFER}"] .badge')
-            expect(badge).to_have_text("bad schema", timeout=10_000)
+            expect(badge).to_have_text("bad schema")
             cam_badge = page.locator(f'[data-node-link="{CAM}"] .badge')
             expect(cam_badge).to_have_text("schema")
         finally:
@@ -174,21 +165,7 @@ def test_the_page_shows_the_problem(server: TuneServer) -> None:
 def test_the_audit_reports_each_bad_schema_and_the_good_node_fine(
     graph_with_hostiles: None,
 ) -> None:
-    nodes = [CAM, *EXPECTED]
-    command = [
-        sys.executable,
-        "-m",
-        "genparams",
-        "audit",
-        "--format",
-        "json",
-        "--timeout",
-        "30",
-        *nodes,
-    ]
-    done = subprocess.run(
-        command, cwd=ROOT, capture_output=True, text=True, timeout=120, env=dict(os.environ)
-    )
+    done = run_audit("--format", "json", CAM, *EXPECTED)  # each publishes on its schema topic
     assert "Traceback" not in done.stderr, done.stderr
     assert done.returncode == 1, done.stdout + done.stderr
     report = json.loads(done.stdout, parse_constant=lambda token: pytest.fail(token))

@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import json
 import math
-import os
 import subprocess
 import sys
 from collections.abc import Iterator
@@ -24,6 +23,7 @@ from tests.tune.support import (
     api_call,
     demo_nodes,
     eventually,
+    run_audit,
     unique,
 )
 
@@ -42,7 +42,7 @@ def server() -> Iterator[TuneServer]:
         tune = TuneServer(nodes=(NODE,))
         tune.start()
         try:
-            eventually(lambda: tune.graph.schema(NODE), timeout=20)
+            eventually(lambda: tune.graph.schema(NODE))
             yield tune
         finally:
             tune.stop()
@@ -92,7 +92,7 @@ def test_the_page_decodes_the_tags(server: TuneServer) -> None:
         try:
             page = browser.new_page()
             page.goto(server.url + f"#{NODE}")
-            expect(page.locator(f'form[data-node="{NODE}"]')).to_be_visible(timeout=10_000)
+            expect(page.locator(f'form[data-node="{NODE}"]')).to_be_visible()
             expect(page.locator('[data-param="threshold"]')).to_have_count(1)
             # NaN holding NaN and inf holding inf are at their defaults.
             expect(page.locator("[data-diff-empty]")).to_be_visible()
@@ -116,7 +116,7 @@ def test_the_page_shows_and_takes_nan_and_infinities_by_name(server: TuneServer)
             page = browser.new_page()
             page.goto(server.url + f"#{NODE}")
             threshold = page.locator('[data-param="threshold"]')
-            expect(threshold).to_have_value("nan", timeout=10_000)
+            expect(threshold).to_have_value("nan")
             expect(page.locator('[data-param="floor"]')).to_have_value("-inf")
             expect(page.locator('[data-param="mode"]')).to_have_value("1")
             threshold.fill("inf")
@@ -139,15 +139,7 @@ def test_download_then_audit_finds_no_drift(server: TuneServer, tmp_path: Path) 
     params = tmp_path / "nonfinite.yaml"
     params.write_text(get(server, f"/api/params-file?node={NODE}"), encoding="utf-8")
     assert ".nan" in params.read_text(encoding="utf-8")
-    command = [sys.executable, "-m", "genparams", "audit", "--format", "json"]
-    done = subprocess.run(
-        [*command, "--params-file", str(params), NODE],
-        cwd=tmp_path,
-        capture_output=True,
-        text=True,
-        timeout=120,
-        env=dict(os.environ),
-    )
+    done = run_audit("--format", "json", "--params-file", str(params), NODE, cwd=tmp_path)
     assert done.returncode == 0, done.stdout + done.stderr
     report = strict(done.stdout)
     assert report["audited"] == [NODE]

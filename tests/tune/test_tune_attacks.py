@@ -99,7 +99,7 @@ def context(browser: Browser, server: TuneServer) -> Iterator[BrowserContext]:
     opened = browser.new_context()
     page = opened.new_page()
     page.goto(server.url + f"#{VICTIM}")
-    expect(page.locator(f'form[data-node="{VICTIM}"]')).to_be_visible(timeout=15_000)
+    expect(page.locator(f'form[data-node="{VICTIM}"]')).to_be_visible()
     assert any(c["name"] == f"genparams-tune-{server.port}" for c in opened.cookies())
     yield opened
     opened.close()
@@ -169,7 +169,7 @@ def test_another_origin_cannot_set(
     origin = f"http://{site}:{attacker.port}"
     with caplog.at_level(logging.WARNING, logger="genparams.tune"):
         page.goto(f"{origin}/script.html")
-        expect(page).to_have_title("done", timeout=15_000)
+        expect(page).to_have_title("done")
         with page.expect_navigation(url=target):
             page.goto(f"{origin}/form.html")
         # Every attempt reached the server and was refused there: two no-cors fetches, the
@@ -212,13 +212,13 @@ def test_the_page_works_under_its_policy_and_survives_a_bad_fragment(
     )
     try:
         page.goto(server.url + "#%E0%A4%A")
-        expect(page.locator(f'[data-node-link="{VICTIM}"] a')).to_be_visible(timeout=15_000)
+        expect(page.locator(f'[data-node-link="{VICTIM}"] a')).to_be_visible()
         expect(page.locator("#status")).to_contain_text("names no node")
         assert "token" not in page.url
         page.locator(f'[data-node-link="{VICTIM}"] a').click()
-        expect(page.locator(f'form[data-node="{VICTIM}"]')).to_be_visible(timeout=15_000)
+        expect(page.locator(f'form[data-node="{VICTIM}"]')).to_be_visible()
         page.reload()  # the cookie, not the address, carries the token now
-        expect(page.locator(f'[data-node-link="{VICTIM}"] a')).to_be_visible(timeout=15_000)
+        expect(page.locator(f'[data-node-link="{VICTIM}"] a')).to_be_visible()
         assert violations == []
         framed = context.new_page()
         with framed.expect_console_message(lambda m: "frame-ancestors" in m.text):
@@ -235,7 +235,7 @@ def test_hostile_published_text_stays_text(context: BrowserContext, server: Tune
         page = context.new_page()
         page.goto(f"{server.url}#/{name}")
         form = page.locator(f'form[data-node="/{name}"]')
-        expect(form).to_be_visible(timeout=15_000)
+        expect(form).to_be_visible()
         expect(form.get_by_text(HOSTILE_TEXT).first).to_be_visible()
         assert form.locator("img, script").count() == 0
         options = form.locator('[data-param="mode"] option').all_text_contents()

@@ -8,11 +8,11 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 import pytest
-from playwright.sync_api import Browser, Page, expect, sync_playwright
+from playwright.sync_api import Page, expect
 
 from genparams.tune.server import TuneServer
 from tests.support import RosHarness, ServiceClient
-from tests.tune.support import CHROMIUM, CHROMIUM_ARGS, demo_nodes, eventually, unique
+from tests.tune.support import demo_nodes, eventually, open_node, unique
 
 NODE = f"/{unique('tune_open')}"
 
@@ -40,24 +40,11 @@ def server(tmp_path_factory: pytest.TempPathFactory) -> Iterator[TuneServer]:
             tune.stop()
 
 
-@pytest.fixture(scope="module")
-def browser() -> Iterator[Browser]:
-    with sync_playwright() as playwright:
-        launched = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
-        yield launched
-        launched.close()
-
-
 @pytest.fixture
-def page(browser: Browser, server: TuneServer) -> Iterator[Page]:
-    opened = browser.new_page(viewport={"width": 1200, "height": 1000})
-    opened.goto(server.url)
-    link = opened.locator(f'[data-node-link="{NODE}"] a')
-    expect(link).to_be_visible(timeout=30_000)
-    link.click()
-    expect(opened.locator(f'form[data-node="{NODE}"]')).to_be_visible(timeout=30_000)
-    yield opened
-    opened.close()
+def page(page: Page, server: TuneServer) -> Page:
+    """The page (tests/tune/conftest.py) with the node open."""
+    open_node(page, server, NODE)
+    return page
 
 
 @pytest.fixture(scope="module")
@@ -112,11 +99,11 @@ def test_a_set_on_an_open_group_entry_reaches_the_node(page: Page, remote: Servi
     box = page.locator('[data-param-box="sensors.rear.rate"]')  # the slider moves by 0.199
     box.fill("60")
     box.dispatch_event("change")
-    eventually(lambda: remote.get("sensors.rear.rate") == [60.0], timeout=30)
+    eventually(lambda: remote.get("sensors.rear.rate") == [60.0])
     topic = control(page, "sensors.front.topic")
     topic.fill("/front/points")
     topic.dispatch_event("change")
-    eventually(lambda: remote.get("sensors.front.topic") == ["/front/points"], timeout=30)
+    eventually(lambda: remote.get("sensors.front.topic") == ["/front/points"])
 
 
 def test_an_open_group_entry_is_checked_by_its_field(page: Page, remote: ServiceClient) -> None:

@@ -10,19 +10,13 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-from playwright.sync_api import Browser, Page, expect, sync_playwright
+from playwright.sync_api import Page, expect
 from rclpy.parameter import Parameter
 
 from genparams.cli import main as cli_main
 from genparams.tune.server import TuneServer
-from tests.support import ROOT, RosHarness, ServiceClient
-from tests.tune.support import (
-    CHROMIUM,
-    CHROMIUM_ARGS,
-    demo_nodes,
-    eventually,
-    unique,
-)
+from tests.support import ROOT, RosHarness
+from tests.tune.support import demo_nodes, error, eventually, open_node, service_client, unique
 
 CAM, ARM, MOTION, PLAIN = (
     f"/{unique(s)}" for s in ("tune_cam", "tune_arm", "tune_motion", "tune_plain")
@@ -46,45 +40,8 @@ def server(nodes: None) -> Iterator[TuneServer]:
         tune.stop()
 
 
-@pytest.fixture(scope="module")
-def browser() -> Iterator[Browser]:
-    with sync_playwright() as playwright:
-        launched = playwright.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
-        yield launched
-        launched.close()
-
-
-@pytest.fixture
-def page(browser: Browser) -> Iterator[Page]:
-    opened = browser.new_page(viewport={"width": 1200, "height": 1000})
-    yield opened
-    opened.close()
-
-
-def open_node(page: Page, server: TuneServer, node: str) -> None:
-    page.goto(server.url)
-    link = page.locator(f'[data-node-link="{node}"] a')
-    expect(link).to_be_visible(timeout=10_000)
-    link.click()
-    expect(page.locator(f'form[data-node="{node}"]')).to_be_visible(timeout=10_000)
-
-
 def control(page: Page, node: str, name: str):  # type: ignore[no-untyped-def]
     return page.locator(f'form[data-node="{node}"] [data-param="{name}"]')
-
-
-def error(page: Page, name: str):  # type: ignore[no-untyped-def]
-    return page.locator(f'[data-param-error="{name}"]')
-
-
-_CLIENTS: dict[str, ServiceClient] = {}
-
-
-def client(ros_harness: RosHarness, node: str) -> ServiceClient:
-    """One client per node for the module: each opens six service clients."""
-    if node not in _CLIENTS:
-        _CLIENTS[node] = ServiceClient(ros_harness, node)
-    return _CLIENTS[node]
 
 
 def test_slider_sets_the_node_value(
@@ -94,7 +51,7 @@ def test_slider_sets_the_node_value(
     slider = control(page, CAM, "camera.fps")
     expect(slider).to_have_attribute("step", "0.5")
     slider.fill("60")
-    remote = client(ros_harness, CAM)
+    remote = service_client(ros_harness, CAM)
     eventually(lambda: remote.get("camera.fps") == [60.0])
     expect(page.locator('[data-diff="camera.fps"]')).to_be_visible()
 
@@ -107,7 +64,7 @@ def test_out_of_range_is_stopped_in_the_page(
     box.fill("9000")
     box.dispatch_event("change")
     expect(error(page, "camera.width")).to_contain_text("Parameter camera.width out of range")
-    assert client(ros_harness, CAM).get("camera.width") == [640]
+    assert service_client(ros_harness, CAM).get("camera.width") == [640]
 
 
 def test_rule_breaking_value_shows_the_node_reason(
@@ -116,19 +73,19 @@ def test_rule_breaking_value_shows_the_node_reason(
     open_node(page, server, MOTION)
     control(page, MOTION, "min_speed").fill("4")
     expect(error(page, "min_speed")).to_contain_text("rule 'speed_order' broken")
-    assert client(ros_harness, MOTION).get("min_speed") == [0.1]
+    assert service_client(ros_harness, MOTION).get("min_speed") == [0.1]
 
 
 def test_a_set_made_elsewhere_shows_up(
     page: Page, server: TuneServer, ros_harness: RosHarness
 ) -> None:
     open_node(page, server, CAM)
-    result = client(ros_harness, CAM).set(Parameter("camera.width", value=800))
+    result = service_client(ros_harness, CAM).set(Parameter("camera.width", value=800))
     assert result[0].successful
-    expect(control(page, CAM, "camera.width")).to_have_value("800", timeout=1_000)
+    expect(control(page, CAM, "camera.width")).to_have_value("800")
     open_node(page, server, PLAIN)
-    client(ros_harness, PLAIN).set(Parameter("frame", value="odom"))
-    expect(control(page, PLAIN, "frame")).to_have_value("odom", timeout=1_000)
+    service_client(ros_harness, PLAIN).set(Parameter("frame", value="odom"))
+    expect(control(page, PLAIN, "frame")).to_have_value("odom")
 
 
 def test_read_only_parameters_are_disabled(page: Page, server: TuneServer) -> None:
@@ -152,7 +109,7 @@ def test_plain_node_slider_sets_the_value(
 ) -> None:
     open_node(page, server, PLAIN)
     control(page, PLAIN, "gain").fill("7.5")
-    eventually(lambda: client(ros_harness, PLAIN).get("gain") == [7.5])
+    eventually(lambda: service_client(ros_harness, PLAIN).get("gain") == [7.5])
 
 
 def test_add_and_remove_a_map_key(page: Page, server: TuneServer, ros_harness: RosHarness) -> None:
@@ -160,7 +117,7 @@ def test_add_and_remove_a_map_key(page: Page, server: TuneServer, ros_harness: R
     page.locator('[data-map-add="gains"]').fill("wrist")
     page.locator('[data-map-add-button="gains"]').click()
     expect(control(page, ARM, "gains.wrist.p")).to_be_visible()
-    remote = client(ros_harness, ARM)
+    remote = service_client(ros_harness, ARM)
     assert remote.get("joints", "gains.wrist.p") == [["shoulder", "elbow", "wrist"], 1.0]
     page.locator('[data-map-remove="gains.elbow"]').click()
     expect(control(page, ARM, "gains.elbow.p")).to_have_count(0)
@@ -178,7 +135,7 @@ def test_two_edits_apply_atomically_and_one_bad_value_changes_nothing(
     expect(apply).to_contain_text("Apply 2 change(s)")
     apply.click()
     expect(error(page, "min_speed")).to_contain_text("rule 'speed_order' broken")
-    remote = client(ros_harness, MOTION)
+    remote = service_client(ros_harness, MOTION)
     assert remote.get("max_speed", "min_speed") == [1.0, 0.1]
     control(page, MOTION, "min_speed").fill("1.5")
     apply.click()
@@ -250,7 +207,7 @@ def test_reset_to_default_and_the_diff(
     page: Page, server: TuneServer, ros_harness: RosHarness
 ) -> None:
     open_node(page, server, CAM)
-    remote = client(ros_harness, CAM)
+    remote = service_client(ros_harness, CAM)
     assert remote.set(Parameter("control.pid.kp", value=2.5))[0].successful
     expect(page.locator('[data-diff="control.pid.kp"]')).to_contain_text("2.5")
     page.locator('[data-reset="control.pid.kp"]').click()

@@ -344,7 +344,10 @@ function nodeInAddress() {
 function listen() {
   const events = api.events();
   let opened = 0;
-  events.onopen = () => { if (opened++ && page.node) openNode(page.node); };
+  events.onopen = () => {
+    document.body.dataset.listening = "";  // from now on the page follows changes
+    if (opened++ && page.node) openNode(page.node);
+  };
   events.onmessage = (message) => onEvent(parseJson(message.data));
 }
 
