@@ -108,7 +108,7 @@ def test_a_parameter_a_schema_cannot_state_is_left_out_with_a_warning_and_exit_1
 ) -> None:
     node = f"/{unique('lossy')}"
     output = tmp_path / "lossy.yaml"
-    with demo_nodes(f"{node[1:]}:lossy", module=NODES):
+    with node_process(NODES, f"{node[1:]}:lossy"):
         done = import_node(node, "-o", str(output))
     assert done.returncode == 1, done.stderr
     lines = done.stderr.splitlines()  # rclpy's own parameters first, as notes
