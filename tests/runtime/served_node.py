@@ -4,7 +4,7 @@
 from __future__ import annotations
 
 import threading
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import Any
 
@@ -22,11 +22,18 @@ from tests.support import unique_name
 @contextmanager
 def served(params_cls: Any, args: list[str]) -> Iterator[str]:
     """The node's fully qualified name while the block runs."""
+    with served_node("served", lambda node: params_cls.declare(node), args) as name:
+        yield name
+
+
+@contextmanager
+def served_node(stem: str, setup: Callable[[Node], object], args: list[str]) -> Iterator[str]:
+    """A node named after ``stem``, ``setup`` run on it, spun until the block ends."""
     context = Context()
     rclpy.init(context=context)
-    name = unique_name("served")
+    name = unique_name(stem)
     node = Node(name, context=context, cli_args=["--ros-args", *args])
-    params_cls.declare(node)
+    setup(node)
     executor = SingleThreadedExecutor(context=context)
     executor.add_node(node)
     thread = threading.Thread(target=executor.spin, daemon=True)

@@ -7,16 +7,12 @@ values its schema forbids."""
 
 from __future__ import annotations
 
-import threading
 import types
 from collections.abc import Iterator
 from contextlib import contextmanager
 from typing import Any
 
 import pytest
-import rclpy
-from rclpy.context import Context
-from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 
 from genparams.audit.findings import DRIFT_DEFAULT, VIOLATION
@@ -24,6 +20,7 @@ from genparams.audit.walk import AuditResult, audit
 from genparams.runtime.core.spec import compile_schema
 from genparams.runtime.node.schema_topic import publish_schema
 from genparams.tune.graph import Graph
+from tests.runtime.served_node import served_node
 from tests.support import load_generated, unique_name
 from tests.tune.support import eventually
 
@@ -70,24 +67,14 @@ def module(tmp_path_factory: pytest.TempPathFactory) -> types.ModuleType:
 @contextmanager
 def loose_node(module: types.ModuleType) -> Iterator[str]:
     """A node describing itself with the schema, its own plain parameters declared."""
-    context = Context()
-    rclpy.init(context=context)
-    name = unique_name("nested_maps")
-    node = Node(name, context=context)
-    for parameter, value in DECLARED.items():
-        node.declare_parameter(parameter, value)
-    publish_schema(node, compile_schema(module.NestedMapsParams._SPEC), "")
-    executor = SingleThreadedExecutor(context=context)
-    executor.add_node(node)
-    thread = threading.Thread(target=executor.spin, daemon=True)
-    thread.start()
-    try:
-        yield f"/{name}"
-    finally:
-        executor.shutdown()
-        thread.join(timeout=10)
-        node.destroy_node()
-        rclpy.shutdown(context=context)
+
+    def setup(node: Node) -> None:
+        for parameter, value in DECLARED.items():
+            node.declare_parameter(parameter, value)
+        publish_schema(node, compile_schema(module.NestedMapsParams._SPEC), "")
+
+    with served_node("nested_maps", setup, []) as name:
+        yield name
 
 
 @pytest.fixture(scope="module")

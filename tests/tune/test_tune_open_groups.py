@@ -11,20 +11,11 @@ import pytest
 from playwright.sync_api import Page, expect
 
 from genparams.tune.server import TuneServer
+from tests.runtime.test_open_groups import PARAMS  # one params file for node and page
 from tests.support import RosHarness, ServiceClient
 from tests.tune.support import demo_nodes, eventually, open_node, unique
 
 NODE = f"/{unique('tune_open')}"
-
-PARAMS = """\
-/**:
-  ros__parameters:
-    sensors:
-      front: {topic: /front/scan, rate: 50.0}
-      rear: {topic: /rear/scan}
-    controllers:
-      arm: {gains: {left: {p: 2.0}}}
-"""
 
 
 @pytest.fixture(scope="module")
