@@ -36,7 +36,7 @@ from typing import Any
 from rclpy.parameter import Parameter
 
 from bench.build_scenarios import write_bytecode
-from bench.measure import CPU_CLOCK, run_probe, time_process
+from bench.measure import CPU_CLOCK, child_environment, run_probe, time_process
 from bench.node_scenarios import (
     GENPARAMS,
     PLAIN,
@@ -285,12 +285,23 @@ def probe_both(
 
 
 def start_to_declared(prepared: Prepared, samples: int) -> Outcome:
-    """Whole processes (CPU time): start Python, init rclpy, make a node, import, declare, exit."""
-    timed = probe_both(
-        prepared,
-        samples,
-        lambda args: time_process([sys.executable, "-m", "bench.memory_probe", *args])[0],
-    )
+    """Whole processes (CPU time): start Python, init rclpy, make a node, import, declare, exit.
+
+    Every module comes from its compiled bytecode, as from an installed package:
+    the processes share a bytecode cache in a scratch folder (the source tree is
+    not written), filled by one untimed process per side. Without it, a
+    checkout run with ``PYTHONDONTWRITEBYTECODE`` would compile genparams (and any
+    dependency installed without bytecode) from source in every sample.
+    """
+    with tempfile.TemporaryDirectory(prefix="genparams-bytecode-") as cache:
+        env = child_environment(PYTHONPYCACHEPREFIX=cache)
+        env.pop("PYTHONDONTWRITEBYTECODE", None)
+
+        def run(args: list[str]) -> float:
+            return time_process([sys.executable, "-m", "bench.memory_probe", *args], env)[0]
+
+        probe_both(prepared, 1, run)  # untimed: writes the bytecode of both sides
+        timed = probe_both(prepared, samples, run)
     return Outcome(
         f"whole process, start to declared, N={prepared.schema.size:,}",
         timed[GENPARAMS],
