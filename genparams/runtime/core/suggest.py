@@ -3,7 +3,6 @@ remote sets and params-file entries all suggest a name the same way."""
 
 from __future__ import annotations
 
-import difflib
 from collections.abc import Iterable
 
 # difflib's similarity ratio a word must reach to be offered; 0.6 is difflib's default.
@@ -14,6 +13,8 @@ LEAF_CUTOFF = 0.75
 
 def closest(word: str, options: Iterable[str], *, cutoff: float = CUTOFF) -> str | None:
     """The option most like ``word``, or None when none is alike enough."""
+    import difflib  # only an error message needs it: not loaded by a node that declares fine
+
     close = difflib.get_close_matches(word, sorted(options), n=1, cutoff=cutoff)
     return close[0] if close else None
 
