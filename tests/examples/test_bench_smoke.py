@@ -133,6 +133,21 @@ def test_profile_splits_declare_and_set_into_steps() -> None:
             assert any(line.startswith(f"  - {label}: ") for line in lines), label
 
 
+def test_start_profile_times_every_step_of_both_sides() -> None:
+    result = subprocess.run(
+        [sys.executable, "-m", "bench.start_profile", "--sizes", "10", "--samples", "1"],
+        cwd=ROOT,
+        env=dict(os.environ),
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert result.returncode == 0, result.stderr
+    sides = [line.split()[0] for line in result.stdout.splitlines() if line.startswith("  ")]
+    assert (sides.count("plain"), sides.count("genparams")) == (4, 9)
+    assert "  genparams  load std_msgs/String" in result.stdout
+
+
 def test_check_params_scale_runs_and_its_largest_file_fits_the_limit(
     capsys: pytest.CaptureFixture[str],
 ) -> None:
