@@ -55,39 +55,6 @@ def test_generated_module_imports_no_generator_dependency(tmp_path: Path) -> Non
     assert runtime_imports(sys.executable, tmp_path) == "[]\n[]\n"
 
 
-# Declaring loads std_msgs/String without the other std_msgs types; a later
-# `from std_msgs.msg import String` is the same class and receives the schema message.
-STRING_PROBE = """
-import sys, time
-import rclpy, rclpy.node, rclpy.parameter
-from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
-sys.path.insert(0, sys.argv[1])
-from camera_driver_params import CameraDriverParams
-rclpy.init()
-serial = rclpy.parameter.Parameter("serial", value="ABCD1234")
-node = rclpy.node.Node("string_probe", parameter_overrides=[serial])
-CameraDriverParams.declare(node)
-print(sorted(m for m in sys.modules if m.startswith("std_msgs.msg")))
-from std_msgs.msg import String
-from genparams.runtime.node.schema_topic import SchemaPublisher
-print(SchemaPublisher.of(node).message_type is String)
-received = []
-qos = QoSProfile(depth=1, reliability=ReliabilityPolicy.RELIABLE,
-                 durability=DurabilityPolicy.TRANSIENT_LOCAL)
-node.create_subscription(String, "/string_probe/genparams/schema", received.append, qos)
-deadline = time.monotonic() + 20
-while not received and time.monotonic() < deadline:
-    rclpy.spin_once(node, timeout_sec=0.1)
-print(type(received[0]) is String and '"camera_driver"' in received[0].data)
-"""
-
-
-def test_declaring_loads_only_the_string_message_of_std_msgs(tmp_path: Path) -> None:
-    (tmp_path / "camera_driver_params.py").write_text(genparams.generate(SCHEMA))
-    output = run([sys.executable, "-c", STRING_PROBE, tmp_path], tmp_path).stdout
-    assert output == "['std_msgs.msg._string']\nTrue\nTrue\n"
-
-
 @pytest.fixture(scope="module")
 def wheel(tmp_path_factory: pytest.TempPathFactory) -> Path:
     source = copy_repository(tmp_path_factory.mktemp("genparams-src"))

@@ -27,7 +27,6 @@ from genparams.runtime.core.json_codec import dumps
 from genparams.runtime.core.naming import ENTRY_KEY, join_prefix
 from genparams.runtime.core.schema_message import FORMAT_VERSION
 from genparams.runtime.core.spec import CompiledParam, CompiledSchema
-from genparams.runtime.node.string_message import string_type
 
 if TYPE_CHECKING:
     from rclpy.node import Node
@@ -169,19 +168,20 @@ class SchemaPublisher:
 
     def __init__(self, node: Node) -> None:
         from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
+        from std_msgs.msg import String
 
         # The node's name, not the node: the registry below is keyed weakly by the node,
         # and a value holding its key would keep every node ever declared alive.
         self.node_name = node.get_fully_qualified_name()
         self.classes: dict[tuple[str, str], ClassText] = {}
-        self.message_type = string_type()
+        self.message_type = String
         qos = QoSProfile(
             depth=1,
             history=HistoryPolicy.KEEP_LAST,
             reliability=ReliabilityPolicy.RELIABLE,
             durability=DurabilityPolicy.TRANSIENT_LOCAL,
         )
-        self.publisher: Publisher = node.create_publisher(self.message_type, SCHEMA_TOPIC, qos)
+        self.publisher: Publisher = node.create_publisher(String, SCHEMA_TOPIC, qos)
 
     @classmethod
     def of(cls, node: Node) -> SchemaPublisher:
