@@ -59,12 +59,11 @@ def steps(directory: str, size: int, side: str) -> dict[str, float]:
     )
     from genparams.runtime.core.spec import compile_schema
     from genparams.runtime.node.schema_topic import class_text
-    from genparams.runtime.node.string_message import string_type
 
     params = getattr(module, f"Bench{size}Params")
     compiled = step("compile the class spec (first declare)", lambda: compile_schema(params._SPEC))
     step("build the schema message text (first declare)", lambda: class_text(compiled, ""))
-    step("load std_msgs/String", string_type)
+    step("load std_msgs/String", lambda: importlib.import_module("std_msgs.msg").String)
     step("declare (the rest)", lambda: params.declare(node))
     return spent
 
