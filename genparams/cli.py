@@ -24,7 +24,7 @@ from genparams.commands import (
     validate,
 )
 from genparams.commands._common import report
-from genparams.errors import CommandError
+from genparams.errors import CommandError, GenparamsError
 
 COMMANDS = (
     generate,
@@ -58,13 +58,15 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run one command; its exit code. A ``CommandError`` is reported here, only here, by the
-    one writer of stderr (``commands._common.report``)."""
+    one writer of stderr (``commands._common.report``). Any other ``GenparamsError`` a
+    command lets through is bad input all the same: its message, exit 2, no traceback."""
     args = build_parser().parse_args(argv)
     try:
         code: int = args.run(args)
-    except CommandError as error:
-        report(*error.lines)
-        return error.exit_code
+    except GenparamsError as error:
+        failed = error if isinstance(error, CommandError) else CommandError(error)
+        report(*failed.lines)
+        return failed.exit_code
     return code
 
 

@@ -6,6 +6,7 @@ import importlib
 import inspect
 import pkgutil
 
+import pytest
 from rclpy.exceptions import ParameterImmutableException
 
 import genparams
@@ -107,3 +108,20 @@ def test_a_command_error_shows_every_character_and_keeps_lines_of_errors() -> No
         "node 'a\\nb\\u202e' is wrong",
     ]
     assert error.exit_code == 2
+
+
+def test_an_error_a_command_lets_through_is_reported_with_exit_2(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    from genparams.cli import main
+    from genparams.commands import validate
+
+    def unwrapped(args: object) -> int:
+        raise SchemaError([SchemaProblem(Location("s.yaml", 3, 5), "gain", "must be a number")])
+
+    monkeypatch.setattr(validate, "run", unwrapped)
+    assert main(["validate", "s.yaml"]) == 2
+    captured = capsys.readouterr()
+    assert captured.out == ""
+    assert "s.yaml:3:5: gain: must be a number" in captured.err
+    assert "Traceback" not in captured.err
