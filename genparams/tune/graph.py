@@ -92,12 +92,14 @@ class Graph:
         self.executor = MultiThreadedExecutor(num_threads=4, context=self.context)
         self.executor.add_node(self.node)
         self.lock = threading.Lock()
+        self.closing = threading.Event()
         self.schemas: dict[str, Received] = {}  # node name -> what its schema topic carried
         self.subscribed: set[str] = set()
         self.schema_subscriptions: dict[str, Subscription] = {}
         self.absent: set[str] = set()  # nodes the last sweep found gone (see sweep)
         self.seen: set[str] = set()  # held nodes some sweep found in the graph
         self.asked: dict[str, float] = {}  # held node -> when its first client was made
+        self.sweeps = 0  # sweeps done so far
         self.quiet: set[str] = set()  # schema topics it found without a publisher
         self.readers: dict[str, ParameterReader] = {}
         self.setters: dict[str, AsyncParameterClient] = {}
@@ -116,7 +118,7 @@ class Graph:
         One bad message or a race inside rclpy must not end the thread that answers
         every page and audit.
         """
-        while self.context.ok():
+        while self.context.ok() and not self.closing.is_set():
             try:
                 self.executor.spin()
             except (ExternalShutdownException, ShutdownException):
@@ -127,10 +129,12 @@ class Graph:
                 LOG.exception("genparams tune: the ROS executor went on after an error")
 
     def close(self) -> None:
+        """Stop spinning, then destroy: nothing is destroyed under the executor's wait."""
+        self.closing.set()
         self.executor.shutdown(timeout_sec=1.0)
+        self.thread.join(timeout=10.0)
         self.node.destroy_node()
         rclpy.shutdown(context=self.context)
-        self.thread.join(timeout=2.0)
 
     # The graph ---------------------------------------------------------------
 
@@ -196,6 +200,7 @@ class Graph:
                 self.schemas.pop(name, None)
                 self.seen.discard(name)
                 self.asked.pop(name, None)
+        self.sweeps += 1
 
     def writers(self, node_name: str) -> dict[bytes, str | None]:
         """The publishers on a node's schema topic: endpoint gid -> node name (None: unknown)."""
