@@ -229,12 +229,8 @@ def _each_call(function: Callable[[Any], Any], arguments: Iterator[Any]) -> Call
     return call
 
 
-def set_one(declared: Declared, repeats: int, number: int = 25) -> list[Result]:
-    """``node.set_parameters`` of one parameter, to a new value each time.
-
-    Many short samples (six per repeat): their minimum is what one set costs
-    when no other process is competing for the core.
-    """
+def set_calls(declared: Declared) -> dict[str, Callable[[], None]]:
+    """Per side, a call of ``node.set_parameters`` of the probe, to its other value each time."""
     probe = declared.schema.probe
     calls = {}
     for label, node in declared.nodes.items():
@@ -243,6 +239,16 @@ def set_one(declared: Declared, repeats: int, number: int = 25) -> list[Result]:
             [Parameter(probe.name, value=probe.kind.default)],
         )
         calls[label] = _each_call(node.set_parameters, values)
+    return calls
+
+
+def set_one(declared: Declared, repeats: int, number: int = 25) -> list[Result]:
+    """``node.set_parameters`` of one parameter, to a new value each time.
+
+    Many short samples (six per repeat): their minimum is what one set costs
+    when no other process is competing for the core.
+    """
+    calls = set_calls(declared)
     samples = interleaved(calls, repeats * 6, number)
     _expect_view_follows(declared)
     return [Result("set_one", label, declared.schema.size, "s", s) for label, s in samples.items()]

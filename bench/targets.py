@@ -43,10 +43,9 @@ from bench.node_scenarios import (
     Declared,
     Pair,
     RosSession,
-    _alternating,
-    _each_call,
     attribute_chain,
     interleaved,
+    set_calls,
 )
 from bench.workspace import Prepared, prepare
 
@@ -132,14 +131,7 @@ def _format(value: float, unit: str) -> str:
 
 
 def set_one(declared: Declared, samples: int) -> Outcome:
-    probe = declared.schema.probe
-    calls = {}
-    for label, node in declared.nodes.items():
-        values = _alternating(
-            [Parameter(probe.name, value=probe.kind.other)],
-            [Parameter(probe.name, value=probe.kind.default)],
-        )
-        calls[label] = _each_call(node.set_parameters, values)
+    calls = set_calls(declared)
     timed = interleaved(calls, samples, 20)
     return Outcome(
         f"one node.set_parameters, N={declared.schema.size:,}",
