@@ -10,7 +10,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-from playwright.sync_api import Page, expect
+from playwright.sync_api import Page, Route, expect
 from rclpy.parameter import Parameter
 
 from genparams.cli import main as cli_main
@@ -213,3 +213,38 @@ def test_reset_to_default_and_the_diff(
     page.locator('[data-reset="control.pid.kp"]').click()
     eventually(lambda: remote.get("control.pid.kp") == [1.0])
     expect(page.locator('[data-diff="control.pid.kp"]')).to_have_count(0)
+
+
+def test_a_change_before_the_page_listens_is_caught_up(
+    page: Page, server: TuneServer, ros_harness: RosHarness
+) -> None:
+    """The node is read, then changed before the page's event stream opens: the event
+    goes nowhere, and the page reads the node again once the stream opens."""
+    open_node(page, server, CAM)  # the server knows the node
+    page.goto("about:blank")
+    remote = service_client(ros_harness, CAM)
+    [old] = remote.get("camera.height")
+    new = old + 2 if old < 4000 else old - 2
+    held: list[Route] = []
+
+    def hold(route: Route) -> None:  # the stream opens when the test says
+        held.append(route)
+
+    page.route("**/api/events", hold)
+
+    def stale_then_changed(route: Route) -> None:
+        answer = route.fetch()  # the node as it is now
+        assert remote.set(Parameter("camera.height", value=new))[0].successful
+        route.fulfill(response=answer)
+
+    page.route("**/api/node?*", stale_then_changed, times=1)
+    page.goto(f"{server.url}#{CAM}")
+    expect(control(page, CAM, "camera.height")).to_have_value(str(old))
+
+    def stream_asked() -> bool:
+        page.wait_for_timeout(50)  # Playwright calls hold() only while in one of its calls
+        return bool(held)
+
+    eventually(stream_asked)
+    held[0].continue_()
+    expect(control(page, CAM, "camera.height")).to_have_value(str(new))

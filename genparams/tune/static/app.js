@@ -5,8 +5,9 @@ import { parseJson, shownJson, stringifyJson } from "./json.js";
 
 // pending: edits not applied yet; drafts: values being typed (checked, not applied);
 // applying: the edits of the apply in flight and the names the node changed meanwhile.
+// loading: the node whose read is in flight; missed: one of its events came meanwhile.
 const page = { readOnly: false, node: null, view: null, pending: new Map(), drafts: new Map(),
-  applying: null, reload: null, checkTimer: null, checks: 0 };
+  applying: null, reload: null, checkTimer: null, checks: 0, loading: null, missed: false };
 const CHECK_DELAY_MS = 150;
 
 function status(text) { document.getElementById("status").textContent = text; }
@@ -287,18 +288,49 @@ function buildInChunks(body, builders, form, budget = 60) {
   });
 }
 
+// A read is a snapshot: a change the node makes while it is in flight may be older or
+// newer than it, so such a change (seen as an event, or a stream that opened meanwhile)
+// makes the node be read again once the form shows the first read.
 async function openNode(name, loading = null) {
   page.node = name;
   for (const item of document.querySelectorAll("#nodes li"))
     item.classList.toggle("selected", item.dataset.nodeLink === name);
   status(`loading ${name}…`);
-  const data = await (loading || api.node(name));
+  const data = await reading(name, loading || api.node(name));
   if (page.node !== name) return;
   renderNode(data);  // later sections follow on their own; the form says data-complete
   status(`${data.parameters.length} parameters`);
+  if (page.missed) await catchUp(name);
+}
+
+// The node's read, with its events held back (noted in page.missed) until it is in.
+async function reading(name, read) {
+  page.loading = name;
+  page.missed = false;
+  try {
+    return await read;
+  } finally {
+    if (page.loading === name) page.loading = null;
+  }
+}
+
+// Read the open node again and take in what changed since: values as events bring them;
+// any other difference (a parameter more or less) builds the form anew.
+async function catchUp(name) {
+  const data = await reading(name, api.node(name));
+  if (page.node !== name || !page.view) return;
+  const known = page.view.known.values;
+  const names = data.parameters.map((p) => p.name);
+  if (names.length !== known.size || names.some((n) => !known.has(n))) return openNode(name);
+  const changed = {};
+  for (const p of data.parameters)
+    if (stringifyJson(p.value) !== stringifyJson(known.get(p.name))) changed[p.name] = p.value;
+  onEvent({ node: name, changed });
+  if (page.missed) await catchUp(name);
 }
 
 function onEvent(event) {
+  if (event.node === page.loading) { page.missed = true; return; }  // read again once shown
   if (!page.view || event.node !== page.node) return;
   if (event.kind === "schema" || Object.keys(event.new || {}).length || (event.deleted || []).length) {
     clearTimeout(page.reload);  // the set of parameters changed: build the form again
@@ -339,14 +371,19 @@ function nodeInAddress() {
   }
 }
 
-// Events of the open node. The server drops a stream that falls too far behind; the
-// browser reconnects, and the node is read again for whatever the gap held.
+// Events of the open node. Whatever changed before the stream opened is not in it: the
+// open node is read again then, the first time as after a reconnect (the server drops a
+// stream that falls too far behind, and the browser reconnects).
 function listen() {
   const events = api.events();
   let opened = 0;
   events.onopen = () => {
     document.body.dataset.listening = "";  // from now on the page follows changes
-    if (opened++ && page.node) openNode(page.node);
+    const first = opened++ === 0;
+    if (!page.node) return;
+    if (!first) openNode(page.node);
+    else if (page.loading === page.node) page.missed = true;
+    else if (page.view) catchUp(page.node).catch((error) => status(`${page.node}: ${error.message}`));
   };
   events.onmessage = (message) => onEvent(parseJson(message.data));
 }
