@@ -41,6 +41,7 @@ class RosHarness:
         self.client_node = Node(unique_name("param_client"), context=self.context)
         self.executor.add_node(self.client_node)
         self.nodes: list[Node] = []
+        self.clients: list[ServiceClient] = []  # of the test nodes, closed with them
 
     def node(
         self, name: str | None = None, *, args: list[str] | None = None, **kwargs: Any
@@ -58,7 +59,10 @@ class RosHarness:
         return node
 
     def client(self, node: Node) -> ServiceClient:
-        return ServiceClient(self, node.get_fully_qualified_name())
+        """``ros2 param``'s view of a test node, closed when the test nodes are destroyed."""
+        client = ServiceClient(self, node.get_fully_qualified_name())
+        self.clients.append(client)
+        return client
 
     def wait(self, future: Future, timeout: float = WAIT_S) -> Any:
         self.executor.spin_until_future_complete(future, timeout_sec=timeout)
@@ -67,6 +71,11 @@ class RosHarness:
         return future.result()
 
     def destroy_test_nodes(self) -> None:
+        # A client left open keeps its six service clients in every later wait of the
+        # session's executor: hundreds of property-test examples would slow each spin.
+        for client in self.clients:
+            client.close()
+        self.clients.clear()
         for node in self.nodes:
             self.executor.remove_node(node)
             node.destroy_node()
@@ -77,6 +86,17 @@ class RosHarness:
         self.executor.shutdown()
         self.client_node.destroy_node()
         rclpy.shutdown(context=self.context)
+
+
+# The services rclpy's AsyncParameterClient opens a client to, by its attribute names.
+PARAMETER_SERVICES = (
+    "get_parameter",
+    "list_parameter",
+    "set_parameter",
+    "get_parameter_types",
+    "describe_parameters",
+    "set_parameters_atomically",
+)
 
 
 class ServiceClient:
@@ -104,6 +124,11 @@ class ServiceClient:
             if future.done():
                 return
         raise TimeoutError(f"parameter services of {target} never answered")
+
+    def close(self) -> None:
+        """Destroy the six service clients (rclpy's parameter client has no close of its own)."""
+        for service in PARAMETER_SERVICES:
+            self.harness.client_node.destroy_client(getattr(self.client, f"_{service}_client"))
 
     def get(self, *names: str) -> list[Any]:
         response = self.harness.wait(self.client.get_parameters(list(names)))

@@ -25,7 +25,7 @@ from rclpy.parameter import Parameter
 from genparams.runtime import Params
 from tests.budget import examples
 from tests.readback import mismatches, params_class, read_back
-from tests.support import RosHarness, ServiceClient, load_generated
+from tests.support import RosHarness, load_generated
 
 SCHEMA = """\
 genparams: 1
@@ -212,7 +212,7 @@ class ParameterServiceMachine(RuleBasedStateMachine):
         super().__init__()
         self.node = self.harness.node()
         self.cfg = self.params_cls.declare(self.node)
-        self.client = ServiceClient(self.harness, self.node.get_fully_qualified_name())
+        self.client = self.harness.client(self.node)
         self.state = {name: rule.default for name, rule in MODEL.items()}
 
     @rule(sets=st.lists(assignments, min_size=1, max_size=4))
