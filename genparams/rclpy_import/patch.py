@@ -8,7 +8,9 @@
   read ``self.params.a.b``; anything else -> ``self.get_parameter('a.b')``
   (the parameter genparams declared).
 - ``self.get_parameter('a.b').value`` (and ``.get_parameter_value().double_value``)
-  of an imported parameter becomes ``self.params.a.b``.
+  of an imported parameter becomes ``self.params.a.b``; so does
+  ``self.get_parameter_or('a.b', alternative).value`` of one always set (neither
+  optional nor conditional), whose alternative rclpy would never give.
 - The class is imported beside the other imports; names whose last use went
   with a declaration (``ParameterDescriptor``, a descriptor variable) go too.
 
@@ -23,6 +25,7 @@ import difflib
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 from genparams.rclpy_import.convert import LEFT_OUT, item_place
 from genparams.rclpy_import.features import AUTOMATIC
@@ -362,14 +365,21 @@ class _Patcher:
     def rewrite_reads(self) -> None:
         scope = Scope(class_name=self.cls.name)
         taken = [(e.start, e.end) for e in self.edits]
-        for call in _self_calls(self.cls, "get_parameter"):
-            if len(call.args) != 1 or call.keywords:
+        reads = [(c, False) for c in _self_calls(self.cls, "get_parameter")]
+        reads += [(c, True) for c in _self_calls(self.cls, "get_parameter_or")]
+        for call, has_alternative in reads:
+            arguments = len(call.args) + len(call.keywords)
+            if not call.args or arguments > (2 if has_alternative else 1):
                 continue
             try:
                 name = Evaluator(scope).value(call.args[0])
             except UntranslatableError:
                 continue
             if name not in self.names:
+                continue
+            # get_parameter_or gives its alternative for a parameter not set (or not
+            # declared): the typed read says None there, so only one always set is read.
+            if has_alternative and not _always_set(self.node.imported.data, name):
                 continue
             outer = _read_of(call, self.parents)
             if outer is None:
@@ -418,6 +428,17 @@ def _read_of(call: ast.Call, parents: dict[ast.AST, ast.AST]) -> ast.AST | None:
         ):
             return outer
     return None
+
+
+def _always_set(schema: dict[str, Any], name: str) -> bool:
+    """Whether the schema's parameter ``name`` holds a value whenever the node runs: it
+    is declared unconditionally, and has a default or must be given one (not optional)."""
+    entry: Any = schema.get("parameters", {})
+    for part in name.split("."):
+        if not isinstance(entry, dict) or part not in entry:
+            return False
+        entry = entry[part]
+    return isinstance(entry, dict) and not entry.get("optional") and "when" not in entry
 
 
 def _self_calls(root: ast.AST, method: str) -> Iterator[ast.Call]:

@@ -51,4 +51,9 @@ class PlannerNode(Node):
 
     def plan(self) -> float:
         gain: float = self.get_parameter("gain").value
+        # An optional parameter's alternative is used while it is not set: the read stays.
+        frame = self.get_parameter_or("frame_id", Parameter("frame_id", value="map")).value
+        # One with a default is always set: the alternative is never used.
+        level = self.get_parameter_or("level", Parameter("level", value=0)).value
+        self.get_logger().debug(f"planning in {frame} at level {level}")
         return gain
