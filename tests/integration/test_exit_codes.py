@@ -192,15 +192,18 @@ def test_a_command_error_is_printed_once_with_its_code(
 
 
 def test_tune_exits_0_once_interrupted(tmp_path: Path) -> None:
-    token = secrets.token_urlsafe(32)
-    command = [sys.executable, "-m", "genparams", "tune", "--port", "0", "--token", token]
+    token = secrets.token_urlsafe(32)  # may start with "-": one argument with its option
+    command = [sys.executable, "-m", "genparams", "tune", "--port", "0", f"--token={token}"]
     server = subprocess.Popen(
         command, cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
     )
     try:
         assert server.stdout is not None
         first = server.stdout.readline()  # once serving; empty if the command ended instead
-        assert first.startswith("genparams tune: serving http://127.0.0.1:"), first
+        if not first.startswith("genparams tune: serving http://127.0.0.1:"):
+            server.kill()
+            _, stderr = server.communicate()
+            raise AssertionError(f"not serving: {first!r}, exit {server.returncode}\n{stderr}")
         server.send_signal(signal.SIGINT)
         _, stderr = server.communicate(timeout=120)
     finally:

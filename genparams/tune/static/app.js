@@ -255,7 +255,7 @@ function renderNode(data) {
     el("div", { class: "toolbar" }, apply, download), body,
     el("h3", { text: "Differences from the defaults" }), diff);
   form.addEventListener("submit", (event) => event.preventDefault());
-  page.view = { form, known, apply, diff };
+  page.view = { form, known, apply, diff, shape: shapeOf(data) };
   buildInChunks(body, builders, form);
   document.getElementById("view").replaceChildren(form);
   updateApplyButton();
@@ -314,14 +314,18 @@ async function reading(name, read) {
   }
 }
 
+// What the form is built from, but the values: the schema (or why it is not used), the
+// places of mapped groups and the parameters' names.
+const shapeOf = (data) => stringifyJson([data.schema ?? null, data.schema_problem ?? null,
+  data.places ?? null, data.parameters.map((p) => p.name).sort()]);
+
 // Read the open node again and take in what changed since: values as events bring them;
-// any other difference (a parameter more or less) builds the form anew.
+// any other difference (a schema, a parameter more or less) builds the form anew.
 async function catchUp(name) {
   const data = await reading(name, api.node(name));
   if (page.node !== name || !page.view) return;
+  if (shapeOf(data) !== page.view.shape) return openNode(name);
   const known = page.view.known.values;
-  const names = data.parameters.map((p) => p.name);
-  if (names.length !== known.size || names.some((n) => !known.has(n))) return openNode(name);
   const changed = {};
   for (const p of data.parameters)
     if (stringifyJson(p.value) !== stringifyJson(known.get(p.name))) changed[p.name] = p.value;
