@@ -26,6 +26,7 @@ READY = "ready"
 START_BUDGET_S = 60.0
 # A stopped process shuts rclpy and DDS down; on a loaded machine that takes a while.
 STOP_S = 30.0
+SPIN_WAIT_S = 0.25  # the longest a stopped node process waits before it sees the stop
 
 
 def serve(nodes: Iterable[Node]) -> int:
@@ -35,7 +36,11 @@ def serve(nodes: Iterable[Node]) -> int:
         executor.add_node(node)
     print(READY, flush=True)
     try:
-        executor.spin()
+        # rclpy's handler of SIGTERM shuts the context down and wakes the executor; its
+        # wake-up can be lost (the process then waits in spin() for ever: 6 of 20 stops here),
+        # so each wait is bounded and the context checked between them.
+        while executor.context.ok():
+            executor.spin_once(timeout_sec=SPIN_WAIT_S)
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
     return 0
