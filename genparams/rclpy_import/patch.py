@@ -432,13 +432,19 @@ def _read_of(call: ast.Call, parents: dict[ast.AST, ast.AST]) -> ast.AST | None:
 
 def _always_set(schema: dict[str, Any], name: str) -> bool:
     """Whether the schema's parameter ``name`` holds a value whenever the node runs: it
-    is declared unconditionally, and has a default or must be given one (not optional)."""
+    is declared unconditionally, under its own name (not one per item), and has a default
+    or must be given one (not optional)."""
     entry: Any = schema.get("parameters", {})
     for part in name.split("."):
         if not isinstance(entry, dict) or part not in entry:
             return False
         entry = entry[part]
-    return isinstance(entry, dict) and not entry.get("optional") and "when" not in entry
+    return (
+        isinstance(entry, dict)
+        and not entry.get("optional")
+        and "when" not in entry
+        and "for_each" not in entry  # per item: no parameter has the key's own name
+    )
 
 
 def _self_calls(root: ast.AST, method: str) -> Iterator[ast.Call]:

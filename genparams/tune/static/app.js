@@ -5,9 +5,12 @@ import { parseJson, shownJson, stringifyJson } from "./json.js";
 
 // pending: edits not applied yet; drafts: values being typed (checked, not applied);
 // applying: the edits of the apply in flight and the names the node changed meanwhile.
-// loading: the node whose read is in flight; missed: one of its events came meanwhile.
+// loading: the node whose read for a new form is in flight; missed: one of its events came
+// meanwhile; reads: reads started (only the newest counts); fresher: the names events set
+// during a catch-up read.
 const page = { readOnly: false, node: null, view: null, pending: new Map(), drafts: new Map(),
-  applying: null, reload: null, checkTimer: null, checks: 0, loading: null, missed: false };
+  applying: null, reload: null, checkTimer: null, checks: 0, loading: null, missed: false,
+  reads: 0, fresher: null };
 const CHECK_DELAY_MS = 150;
 
 function status(text) { document.getElementById("status").textContent = text; }
@@ -289,48 +292,58 @@ function buildInChunks(body, builders, form, budget = 60) {
 }
 
 // A read is a snapshot: a change the node makes while it is in flight may be older or
-// newer than it, so such a change (seen as an event, or a stream that opened meanwhile)
-// makes the node be read again once the form shows the first read.
+// newer than it. Events of a node being read for a new form are held back (page.missed)
+// and the node is read once more when the form shows; a catch-up read of a form already
+// shown lets events through and keeps them over its own older values.
 async function openNode(name, loading = null) {
   page.node = name;
   for (const item of document.querySelectorAll("#nodes li"))
     item.classList.toggle("selected", item.dataset.nodeLink === name);
   status(`loading ${name}…`);
-  const data = await reading(name, loading || api.node(name));
-  if (page.node !== name) return;
+  const data = await newest(name, loading || api.node(name), true);
+  if (data === null || page.node !== name) return;  // another read or node took over
   renderNode(data);  // later sections follow on their own; the form says data-complete
   status(`${data.parameters.length} parameters`);
-  if (page.missed) await catchUp(name);
+  if (page.missed) catchUp(name).catch(failed(name));
 }
 
-// The node's read, with its events held back (noted in page.missed) until it is in.
-async function reading(name, read) {
-  page.loading = name;
-  page.missed = false;
+// A read of `name`; null when a later read started meanwhile (only the newest counts).
+// `hold`: the node's events wait in page.missed until it is in.
+async function newest(name, read, hold = false) {
+  const id = ++page.reads;
+  if (hold) { page.loading = name; page.missed = false; }
   try {
-    return await read;
+    const data = await read;
+    return id === page.reads ? data : null;
   } finally {
-    if (page.loading === name) page.loading = null;
+    if (id === page.reads) page.loading = null;
   }
 }
+
+const failed = (name) => (error) => status(`${name}: ${error.message}`);
 
 // What the form is built from, but the values: the schema (or why it is not used), the
 // places of mapped groups and the parameters' names.
 const shapeOf = (data) => stringifyJson([data.schema ?? null, data.schema_problem ?? null,
   data.places ?? null, data.parameters.map((p) => p.name).sort()]);
 
-// Read the open node again and take in what changed since: values as events bring them;
-// any other difference (a schema, a parameter more or less) builds the form anew.
+// Read the open node again and take in what changed since, as an event would; a value an
+// event brought during the read is newer than the read's. Any other difference (a schema,
+// a parameter more or less) builds the form anew.
 async function catchUp(name) {
-  const data = await reading(name, api.node(name));
-  if (page.node !== name || !page.view) return;
+  const fresher = new Set();
+  page.fresher = fresher;
+  const data = await newest(name, api.node(name));
+  if (page.fresher === fresher) page.fresher = null;
+  if (data === null || page.node !== name || !page.view) return;
   if (shapeOf(data) !== page.view.shape) return openNode(name);
   const known = page.view.known.values;
   const changed = {};
-  for (const p of data.parameters)
-    if (stringifyJson(p.value) !== stringifyJson(known.get(p.name))) changed[p.name] = p.value;
+  for (const p of data.parameters) {
+    if (!fresher.has(p.name) && stringifyJson(p.value) !== stringifyJson(known.get(p.name)))
+      changed[p.name] = p.value;
+  }
   onEvent({ node: name, changed });
-  if (page.missed) await catchUp(name);
 }
 
 function onEvent(event) {
@@ -338,10 +351,11 @@ function onEvent(event) {
   if (!page.view || event.node !== page.node) return;
   if (event.kind === "schema" || Object.keys(event.new || {}).length || (event.deleted || []).length) {
     clearTimeout(page.reload);  // the set of parameters changed: build the form again
-    page.reload = setTimeout(() => openNode(page.node), 200);  // a declare sends one event per parameter
+    page.reload = setTimeout(() => openNode(page.node).catch(failed(page.node)), 200);  // one event per declare
     return;
   }
   for (const [name, value] of Object.entries(event.changed || {})) {
+    page.fresher?.add(name);
     page.view.known.values.set(name, value);
     page.applying?.changed.add(name);
     if (!page.pending.has(name)) { setControl(name, value); showError(name, ""); }
@@ -357,7 +371,7 @@ async function refreshNodes() {
   if (shown === nodes.map((n) => `${n.name}|${n.genparams}|${n.schema_problem || ""}`).join()) return;
   list.replaceChildren(...nodes.map((n) => {
     const link = el("a", { href: `#${n.name}`, text: n.name });
-    link.addEventListener("click", () => openNode(n.name));
+    link.addEventListener("click", () => openNode(n.name).catch(failed(n.name)));
     const badge = n.schema_problem ? el("span", { class: "badge schema-problem", text: "bad schema" })
       : n.genparams ? el("span", { class: "badge", text: "schema" }) : null;
     return el("li", { "data-node-link": n.name, "data-genparams": String(n.genparams),
@@ -385,9 +399,9 @@ function listen() {
     document.body.dataset.listening = "";  // from now on the page follows changes
     const first = opened++ === 0;
     if (!page.node) return;
-    if (!first) openNode(page.node);
+    if (!first) openNode(page.node).catch(failed(page.node));
     else if (page.loading === page.node) page.missed = true;
-    else if (page.view) catchUp(page.node).catch((error) => status(`${page.node}: ${error.message}`));
+    else if (page.view) catchUp(page.node).catch(failed(page.node));
   };
   events.onmessage = (message) => onEvent(parseJson(message.data));
 }

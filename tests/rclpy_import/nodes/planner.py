@@ -55,5 +55,7 @@ class PlannerNode(Node):
         frame = self.get_parameter_or("frame_id", Parameter("frame_id", value="map")).value
         # One with a default is always set: the alternative is never used.
         level = self.get_parameter_or("level", Parameter("level", value=0)).value
-        self.get_logger().debug(f"planning in {frame} at level {level}")
+        # No parameter is named "offsets" (one per joint is): rclpy gives the alternative.
+        offset = self.get_parameter_or("offsets", Parameter("offsets", value=0.5)).value
+        self.get_logger().debug(f"planning in {frame} at level {level}, offset {offset}")
         return gain
