@@ -11,22 +11,22 @@ EXAMPLE := examples/camera_node
 
 .PHONY: venv lock test-latest browser demo import-node-demo demo-arm tour test check lint typecheck golden screenshots docs bench bench-targets bench-quick bench-profile soak mutate mutate-sample clean
 
-# The development environment installs from uv.lock (every package of every extra, with
-# its hashes, from PyPI only), exported to a hashed requirements file and synced by uv;
-# uv itself comes from requirements/uv.txt (hashed). genparams goes in editable, without
-# dependencies of its own and without build isolation (hatchling is in the lock's `build` group).
-INDEX := --index-url https://pypi.org/simple
+# The development environment installs from requirements/dev.txt: every package of every
+# extra, the build backend (hatchling, editables) and the dev tools, pinned with their hashes
+# for every platform. It names no package index: the machine's own client configuration
+# decides where packages come from. uv comes pinned and hashed from requirements/uv.txt;
+# genparams goes in editable, without dependencies of its own and without build isolation.
+LOCK := requirements/dev.txt
 UV := $(VENV)/bin/uv
+COMPILE := uv pip compile --quiet --generate-hashes --universal --python-version 3.11
 
-$(VENV)/.installed: pyproject.toml uv.lock requirements/uv.txt
-	rm -rf $(VENV)
-	python3 -m venv $(VENV)
-	$(PYTHON) -m pip install --quiet --require-hashes -r requirements/uv.txt
-	$(UV) export --quiet --locked --all-extras --group build --no-emit-project \
-		--format requirements-txt -o $(VENV)/locked-requirements.txt
-	$(UV) pip sync --quiet --python $(PYTHON) --require-hashes $(INDEX) $(VENV)/locked-requirements.txt
-	$(UV) pip install --quiet --python $(PYTHON) --no-deps --no-build-isolation -e .
-	touch $@
+$(VENV)/.installed: pyproject.toml $(LOCK) requirements/uv.txt
+	rm -rf "$(VENV)"
+	python3 -m venv "$(VENV)"
+	"$(PYTHON)" -m pip install --quiet --require-hashes -r requirements/uv.txt
+	"$(UV)" pip sync --quiet --python "$(PYTHON)" --require-hashes $(LOCK)
+	"$(UV)" pip install --quiet --python "$(PYTHON)" --no-deps --no-build-isolation -e .
+	touch "$@"
 
 venv: $(VENV)/.installed
 
@@ -34,9 +34,8 @@ venv: $(VENV)/.installed
 lock:
 	python3 -m venv build/lock-venv
 	build/lock-venv/bin/pip install --quiet --require-hashes -r requirements/uv.txt
-	build/lock-venv/bin/uv lock --upgrade $(INDEX)
-	build/lock-venv/bin/uv pip compile --quiet --upgrade --generate-hashes --universal \
-		--python-version 3.11 $(INDEX) -o requirements/uv.txt requirements/uv.in
+	build/lock-venv/bin/$(COMPILE) --upgrade --all-extras --group build pyproject.toml -o $(LOCK)
+	build/lock-venv/bin/$(COMPILE) --upgrade -o requirements/uv.txt requirements/uv.in
 
 ## The whole suite against the newest releases (not the lock), in build/latest-venv:
 ## breakage by a new release shows here before `make lock` takes it in.
@@ -45,7 +44,7 @@ test-latest: browser
 	python3 -m venv build/latest-venv
 	build/latest-venv/bin/pip install --quiet --require-hashes -r requirements/uv.txt
 	build/latest-venv/bin/uv pip install --quiet --python build/latest-venv/bin/python \
-		--upgrade $(INDEX) -e ".[test,tune]"
+		--upgrade -e ".[test,tune]"
 	$(FREE_DOMAIN) build/latest-venv/bin/python -m pytest -q
 
 ## The browser tests of `genparams tune` drive Debian's Chromium (Playwright's own download is not used).

@@ -1,7 +1,7 @@
 """genparams as users install it: the wheel's contents, a fresh venv, a lean runtime.
 
 The fresh venv holds the wheel without extras (`pip install genparams`), its dependencies
-pinned by uv.lock: the runtime and code generation, no web stack.
+pinned by requirements/dev.txt: the runtime and code generation, no web stack.
 """
 
 from __future__ import annotations
@@ -83,20 +83,10 @@ def venv(wheel: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:
     started = time.monotonic()
     run([sys.executable, "-m", "venv", "--without-pip", folder], folder.parent)
     # uv comes with the development environment (requirements/uv.txt); its cache keeps it quick.
-    lock = folder.parent / "locked-requirements.txt"
-    export: list[str | Path] = [
-        "export",
-        "--quiet",
-        "--locked",
-        "--all-extras",
-        "--no-emit-project",
-        "-o",
-        lock,
-    ]
-    run([VENV_BIN / "uv", *export, "--project", ROOT], folder.parent)
+    # No index option: the machine's own client configuration decides where packages come from.
     python = folder / "bin" / "python"
     install: list[str | Path] = [VENV_BIN / "uv", "pip", "install", "--quiet", "--python", python]
-    run([*install, "--index-url", "https://pypi.org/simple", "--constraint", lock, wheel], folder)
+    run([*install, "--constraint", ROOT / "requirements" / "dev.txt", wheel], folder)
     print(f"fresh venv with the wheel and its dependencies: {time.monotonic() - started:.1f} s")
     return folder
 
