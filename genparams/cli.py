@@ -6,7 +6,7 @@ import argparse
 import sys
 from collections.abc import Sequence
 
-from genparams import __version__
+from genparams._version import __version__
 from genparams.commands import (
     audit,
     check_deployment,

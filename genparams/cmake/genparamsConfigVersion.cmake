@@ -1,5 +1,5 @@
 # The version comes from the genparams package itself, so it can never disagree with it.
-file(STRINGS "${CMAKE_CURRENT_LIST_DIR}/../__init__.py" _genparams_version_line
+file(STRINGS "${CMAKE_CURRENT_LIST_DIR}/../_version.py" _genparams_version_line
   REGEX "^__version__ = \"[^\"]+\"$")
 string(REGEX REPLACE "^__version__ = \"([^\"]+)\"$" "\\1" PACKAGE_VERSION
   "${_genparams_version_line}")

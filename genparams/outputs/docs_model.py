@@ -11,7 +11,7 @@ import re
 from collections.abc import Iterator
 from dataclasses import dataclass
 
-from genparams import __version__
+from genparams._version import __version__
 from genparams.outputs.params_file import ParamsFile, default_params_file
 from genparams.outputs.yaml_text import value_text
 from genparams.runtime.core.naming import ENTRY_KEY, OVERRIDE_KEYS

@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 
-from genparams import __version__
+from genparams._version import __version__
 from genparams.errors import GenparamsError
 from genparams.outputs.yaml_text import (
     comment_lines,

@@ -9,7 +9,7 @@ from typing import Any
 
 import jinja2
 
-from genparams import __version__
+from genparams._version import __version__
 from genparams.outputs import markup
 from genparams.outputs.docs_model import DocsPage
 from genparams.outputs.params_file import ParamsFile

@@ -20,7 +20,7 @@ from starlette.routing import Mount, Route
 from starlette.staticfiles import StaticFiles
 from starlette.types import ASGIApp
 
-from genparams import __version__
+from genparams._version import __version__
 from genparams.tune.bodies import RequestError, edits, node_name, set_request
 from genparams.tune.checking import Checker
 from genparams.tune.events import EventStreams

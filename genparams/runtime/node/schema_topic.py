@@ -22,7 +22,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from genparams import __version__
+from genparams._version import __version__
 from genparams.runtime.core.json_codec import dumps
 from genparams.runtime.core.naming import ENTRY_KEY, join_prefix
 from genparams.runtime.core.schema_message import FORMAT_VERSION
