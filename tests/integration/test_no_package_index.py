@@ -17,7 +17,7 @@ from tests.support import ROOT
 
 # Each pattern is written so that this file's own text does not match it.
 INDEX_SHAPES = {
-    "an index option": re.compile(r"--(?:extra-)?index-url\b|--find-links\b|--default-index\b"),
+    "an index option": re.compile(r"--(?:extra-)?index-url\b|--find[-]links\b|--default[-]index\b"),
     "an index setting": re.compile(
         r"^\s*(?:extra[-_])?index[-_]url\s*=|^\s*find[-_]links\s*=|\[\[tool\.uv\.index\]\]",
         re.MULTILINE,
@@ -64,6 +64,7 @@ def test_no_tracked_file_names_a_package_index() -> None:
         "pip install --" + "index-url X pkg",
         "uv pip sync --" + "extra-index-url X r.txt",
         "pip install --" + "find-links ./wheels pkg",
+        "uv pip install --" + "default-index X pkg",
         "[global]\n" + "index" + "-url = X\n",
         "export " + "PIP_" + "INDEX_URL=X",
         "source = { " + "registry" + ' = "https' + '://example.invalid/simple" }',
