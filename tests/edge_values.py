@@ -60,8 +60,8 @@ def _above(x: float) -> float:
     return math.nextafter(x, math.inf)
 
 
-RANGE = "out of range"
-STEP = "not on a step"
+RANGE = "must be within"
+STEP = "plus a whole number of steps of"
 
 EDGES: tuple[Edge, ...] = (
     # int range with a step: the edges, one step inside, one past, between steps
@@ -99,16 +99,23 @@ EDGES: tuple[Edge, ...] = (
     # array items: rclpy checks no ranges on arrays, genparams checks each item
     Edge("ticks", [0, 100], True),
     Edge("ticks", [5, 95], True),
-    Edge("ticks", [0, 101], False, "item 1 101 is out of range"),
-    Edge("ticks", [-1], False, "item 0 -1 is out of range"),
-    Edge("ticks", [0, 7], False, "item 1 7 is not on a step"),
+    Edge("ticks", [0, 101], False, "item 1 must be within [0, 100] (range), got 101"),
+    Edge("ticks", [-1], False, "item 0 must be within [0, 100] (range), got -1"),
+    Edge(
+        "ticks", [0, 7], False, "item 1 must be 0 plus a whole number of steps of 5 (range), got 7"
+    ),
     Edge("weights", [0.0, 1.0, 0.25], True),
     Edge("weights", [1.0 + TOLERANCE / 10], True),
-    Edge("weights", [0.5, 1.001], False, "item 1 1.001 is out of range"),
-    Edge("weights", [0.3], False, "item 0 0.3 is not on a step"),
+    Edge("weights", [0.5, 1.001], False, "item 1 must be within [0.0, 1.0] (range), got 1.001"),
+    Edge(
+        "weights",
+        [0.3],
+        False,
+        "item 0 must be 0.0 plus a whole number of steps of 0.25 (range), got 0.3",
+    ),
     Edge("spans", [-10, 10, 9], True),
-    Edge("spans", [11], False, "item 0 11 is out of range"),
-    Edge("spans", [0, -11], False, "item 1 -11 is out of range"),
+    Edge("spans", [11], False, "item 0 must be within [-10, 10] (range), got 11"),
+    Edge("spans", [0, -11], False, "item 1 must be within [-10, 10] (range), got -11"),
     # gt / le on a double: the open edge is refused, the closed one accepted
     Edge("gain", 0.0, False, "must be > 0.0 (gt)"),
     Edge("gain", sys.float_info.min, True),  # the smallest normal double: rcl reads no subnormal

@@ -41,7 +41,7 @@ from genparams.runtime.core.schema_message import class_spec, why_not_run
 from genparams.runtime.core.spec import CompiledParam, CompiledSchema, compile_uncached
 from genparams.runtime.core.types import TYPES
 from genparams.runtime.core.validators import Custom, Validator
-from genparams.runtime.node.binding import check_each
+from genparams.runtime.node.binding import check_each, refusals
 from genparams.runtime.node.rclpy_internals import descriptor_check, undeclared_check
 
 
@@ -112,10 +112,13 @@ class ClassChecks:
     def full(self, name: str) -> str:
         return join_prefix(self.prefix, name)
 
-    def param(self, full_name: str) -> CompiledParam | None:
+    def param(self, full_name: str, old_names: bool = False) -> CompiledParam | None:
+        """The parameter ``full_name`` names (with ``old_names``, also by an old name)."""
         if self.prefix and not full_name.startswith(self.prefix + "."):
             return None
         name = self.relative(full_name)
+        if old_names:
+            name = self.compiled.aliases.get(name, name)
         found = self.compiled.parameters.get(name)
         if found is not None:
             return found
@@ -219,20 +222,40 @@ class ProposalCheck:
                     verdicts[parameter.name].reasons.append(reason)
             return reason, list(verdicts.values())
         # rclpy's descriptor check: the first value it refuses refuses the set.
-        first = None
+        first: tuple[str, str] | None = None
         for parameter in proposed:
             result = descriptor_check(
                 self.node, parameter, descriptor_of(self.current[parameter.name])
             )
             if not result.successful:
                 verdicts[parameter.name].reasons.append(result.reason)
-                first = first or result.reason
+                first = first or (parameter.name, result.reason)
         if first is not None:
-            return first, list(verdicts.values())
+            return self.descriptor_refusal(*first, proposed, verdicts), list(verdicts.values())
         reasons: list[ParameterProblem] = []
         for checks in self.classes:
             reasons.extend(self.class_reasons(checks, proposed, verdicts))
         return render_problems(reasons) or None, list(verdicts.values())
+
+    def descriptor_refusal(
+        self, name: str, reason: str, proposed: Sequence[Parameter], verdicts: dict[str, Verdict]
+    ) -> str:
+        """The node words rclpy's refusal of a value a class owns as the classes do
+        (``consistency.NodeSets.in_own_words``); other refusals keep rclpy's words."""
+        owned = [
+            {p.name: param for p in proposed if (param := checks.param(p.name, True)) is not None}
+            for checks in self.classes
+        ]
+        if not any(name in own for own in owned):
+            return reason
+        problems = [problem for own in owned for problem in refusals(own, proposed)]
+        if not problems:
+            return reason
+        for verdict in verdicts.values():
+            verdict.reasons.clear()
+        for problem in problems:
+            verdicts[problem.key].reasons.append(render_problem(problem))
+        return render_problems(problems)
 
     def class_reasons(
         self, checks: ClassChecks, proposed: Sequence[Parameter], verdicts: dict[str, Verdict]

@@ -36,7 +36,7 @@ def test_demo_tunes_a_node_in_another_process() -> None:
     assert "get serial -> 'CAM00042'" in out
     assert "set camera.fps = 15.0 -> accepted" in out
     assert "set camera.encoding = 'yuv422' -> rejected: camera.encoding: must be one of" in out
-    assert "set robot_name = 'renamed' -> rejected: Trying to set a read-only parameter" in out
+    assert "set robot_name = 'renamed' -> rejected: robot_name: read-only: set it when" in out
     assert "final: {'camera.fps': 15.0, 'camera.encoding': 'rgb8', 'serial': 'CAM00042'}" in out
     assert "cannot declare camera_driver parameters (3 problems)" in out
     assert "(exit code 1)" in out

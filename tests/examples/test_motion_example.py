@@ -25,7 +25,7 @@ def test_tour_runs_every_part() -> None:
         "set use_sim_time := True\nset base.min_speed",  # nobody heard use_sim_time
         "every committed snapshot keeps min_speed <= max_speed: True",
         "on_change calls chain in commit order: True; node and cfg agree: True",
-        "set max_speed=9.0 -> rejected before sending: max_speed: 9.0 is out of range",
+        "set max_speed=9.0 -> rejected before sending: max_speed: must be within",
         "watch heard: min_speed 0.5 -> 1.25",
         "configured with max_speed=4.0",
         "set min_speed := 4.5 -> rejected: rule 'speed_order' broken",

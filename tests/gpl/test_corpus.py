@@ -45,7 +45,7 @@ REJECTED = {
     "test_gripper_action_position_controller_empty_joint": "joint: override rejected: must not "
     "be empty (not_empty)",
     # GPL's descriptor range for gt<>: [0.0] starts one epsilon above 0.0, so ROS refuses it.
-    "tricycle_controller": "wheel_radius: override rejected: 0.0 is out of range",
+    "tricycle_controller": "wheel_radius: override rejected: must be within",
 }
 
 

@@ -126,7 +126,7 @@ def test_ament_python_generates_at_build_time(
         assert client.get("limits.max", "median_window") == [12.5, 5]
         (rejected,) = client.set(Parameter("limits.max", value=150.0))
         assert not rejected.successful
-        assert "limits.max" in rejected.reason and "out of range" in rejected.reason
+        assert "limits.max" in rejected.reason and "must be within" in rejected.reason
 
     gripper = unique_name("gripper")
     with node_process(

@@ -171,7 +171,7 @@ def test_defaults_takes_nested_dicts_ints_for_doubles_and_says_what_failed(
         motion.MotionParams.defaults({"max_speed": 30})
     assert str(bad.value) == (
         "MotionParams.defaults(): cannot build motion parameters (1 problem):\n"
-        "  - max_speed: value rejected: 30.0 is out of range: within [0.0, 10.0]"
+        "  - max_speed: value rejected: must be within [0.0, 10.0] (range), got 30.0"
     )
 
 

@@ -19,7 +19,6 @@ from rclpy.parameter import Parameter
 import genparams
 from genparams.runtime import Changes, GroupMap, ParameterDeclarationError
 from genparams.runtime.node.consistency import parameter_set_lock
-from genparams.runtime.node.rewrites import add_rewrite
 from tests.support import ROOT, RosHarness, ServiceClient, load_generated
 
 ARM = """\
@@ -119,7 +118,9 @@ def test_map_grows_and_shrinks_through_services(
     # New entries carry their descriptors: ranges and read-only hold.
     (max_,) = client.describe("gains.wrist.limits.max")
     assert max_.floating_point_range[0].to_value == 5.0
-    assert "out of range" in _reason(client.set(Parameter("gains.wrist.limits.max", value=9.0))[0])
+    assert _reason(client.set(Parameter("gains.wrist.limits.max", value=9.0))[0]) == (
+        "gains.wrist.limits.max: must be within [0.0, 5.0] (range), got 9.0"
+    )
     assert "read-only" in _reason(client.set(Parameter("gains.wrist.offset", value=1))[0])
     # One consistent change: the key list and the entries move together.
     (changes,) = seen
@@ -436,7 +437,7 @@ def test_set_of_an_entry_racing_its_removal_leaves_no_stray(
             checked.set()
         return parameters
 
-    add_rewrite(node, signal)
+    node.add_pre_set_parameters_callback(signal)
     outcome: list[object] = []
 
     def set_elbow() -> None:

@@ -153,7 +153,9 @@ def test_bad_keys_and_entries_refuse_to_start_together(
     text = str(caught.value)
     assert "sensors: key 'front left' given in the overrides cannot name an entry" in text
     assert "sensors.rear.topic: required parameter is not set" in text
-    assert "sensors.side.rate: override rejected: 0.5 is out of range" in text
+    assert (
+        "sensors.side.rate: override rejected: must be within [1.0, 200.0] (range), got 0.5" in text
+    )
     assert not node.has_parameter("sensors.rear.rate")
 
 

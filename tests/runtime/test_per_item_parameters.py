@@ -87,7 +87,9 @@ def test_overrides_of_items_are_checked(ros: RosHarness, module: types.ModuleTyp
     with pytest.raises(ParameterDeclarationError) as caught:
         module.PerItemParams.declare(node)
     text = str(caught.value)
-    assert "offsets.shoulder: override rejected: 5.0 is out of range" in text
+    assert (
+        "offsets.shoulder: override rejected: must be within [-3.14, 3.14] (range), got 5.0" in text
+    )
     assert "imu: override has the wrong type" in text
 
 

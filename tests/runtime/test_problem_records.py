@@ -72,7 +72,7 @@ def test_a_node_refusing_to_start_lists_records_one_line_each(
     assert [p.key for p in problems] == ["max_speed", "gains.elbow.p"]
     lines = str(caught.value).split("\n")
     assert lines[1:] == [f"  - {render_problem(p)}" for p in problems]
-    assert problems[0].message == "override rejected: 50.0 is out of range: within [0.0, 3.0]"
+    assert problems[0].message == "override rejected: must be within [0.0, 3.0] (range), got 50.0"
 
 
 def test_defaults_name_each_unknown_parameter_as_a_record(arm: types.ModuleType) -> None:

@@ -10,6 +10,7 @@ import importlib.metadata
 import inspect
 from collections.abc import Sequence
 
+import pytest
 from rcl_interfaces.msg import IntegerRange, ParameterDescriptor, SetParametersResult
 from rclpy.exceptions import ParameterNotDeclaredException
 from rclpy.lifecycle import Node as LifecycleNode
@@ -175,3 +176,50 @@ def test_undeclared_check_is_the_refusal_of_a_set(ros: RosHarness) -> None:
             assert verdict == str(exc)
         else:
             assert verdict is None
+
+
+def test_first_descriptor_refusal_is_the_value_a_set_is_refused_for(ros: RosHarness) -> None:
+    node = ros.node()
+    ranged = ParameterDescriptor(integer_range=[IntegerRange(from_value=0, to_value=10, step=1)])
+    node.declare_parameter("a", 1, ranged)
+    node.declare_parameter("b", 1, ranged)
+    node.declare_parameter("c", "x", ParameterDescriptor(read_only=True))
+    cases = [
+        (["a", 11, "b", 12], "a"),
+        (["a", 5, "b", 12], "b"),
+        (["c", "y", "a", 11], "c"),
+        (["a", 5, "b", 6], None),
+    ]
+    for (first, one, second, two), refused in cases:
+        parameters = [Parameter(first, value=one), Parameter(second, value=two)]
+        assert internals.first_descriptor_refusal(node, parameters) == refused
+        result = node.set_parameters_atomically(parameters)
+        assert result.successful == (refused is None)
+        if refused is not None:
+            assert refused in result.reason  # rclpy names the value it refused
+
+
+def test_declared_check_runs_after_pre_set_callbacks_and_can_be_shadowed(
+    ros: RosHarness,
+) -> None:
+    node = ros.node()
+    node.declare_parameter("a", 1)
+    rclpy_check = internals.declared_check(node)
+    seen: list[str] = []
+
+    def check(parameter_list: list[Parameter]) -> None:
+        seen.append(f"check:{[p.name for p in parameter_list]}")
+        rclpy_check(parameter_list)
+
+    def pre_set(parameters: list[Parameter]) -> list[Parameter]:
+        seen.append("pre-set")
+        return [*parameters, Parameter("y", value=1)]
+
+    internals.replace_declared_check(node, check)
+    node.add_pre_set_parameters_callback(pre_set)
+    with pytest.raises(ParameterNotDeclaredException):
+        node.set_parameters([Parameter("a", value=2)])
+    assert seen == ["pre-set", "check:['a', 'y']"]
+    with pytest.raises(TypeError):
+        rclpy_check([42])  # type: ignore[list-item]
+    assert node.get_parameter("a").value == 1

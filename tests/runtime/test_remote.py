@@ -92,7 +92,7 @@ def test_get_and_set_through_remote(ros: RosHarness, module: types.ModuleType) -
     [
         (
             {"max_speed": 50.0},
-            "base.max_speed: 50.0 is out of range: within [0.0, 10.0]",
+            "base.max_speed: must be within [0.0, 10.0] (range), got 50.0",
         ),
         (
             {"drive.mode": "turbo"},

@@ -27,7 +27,7 @@ def test_every_rejected_value_is_named_in_one_reason(
         future.result()
     assert caught.value.reason == (
         "max_sped: no such parameter in arm (did you mean 'max_speed'?); "
-        "left.max_speed: 50.0 is out of range: within [0.0, 3.0]; "
+        "left.max_speed: must be within [0.0, 3.0] (range), got 50.0; "
         "left.gains.elbow.p: must be >= 0.0 (ge), got -1.0"
     )
 

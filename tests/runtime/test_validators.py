@@ -78,12 +78,16 @@ def test_ros_range_describes_its_step() -> None:
     assert RosRange(0, 10, 2, integer=True).describe() == "within [0, 10] in steps of 2"
     each = RosRange(0.0, 1.0, 0.5, integer=False, each=True)
     assert each.describe() == "every item within [0.0, 1.0] in steps of 0.5"
-    assert each([0.0, 0.7]) == "item 1 0.7 is not on a step: " + each.describe()
+    assert each([0.0, 0.7]) == (
+        "item 1 must be 0.0 plus a whole number of steps of 0.5 (range), got 0.7"
+    )
     assert RosRange(0.0, 1.0, 0.0, integer=False)(math.nan) == (
-        "nan is out of range: within [0.0, 1.0]"
+        "must be within [0.0, 1.0] (range), got nan"
     )
     assert RosRange(0, 10, 3, integer=True)(10) is None  # an edge off the step is valid
-    assert RosRange(0, 10, 3, integer=True)(8) == "8 is not on a step: within [0, 10] in steps of 3"
+    assert RosRange(0, 10, 3, integer=True)(8) == (
+        "must be 0 plus a whole number of steps of 3 (range), got 8"
+    )
 
 
 def test_one_of_and_subset_of() -> None:
@@ -239,10 +243,10 @@ def test_values_are_shown_whole_up_to_60_characters() -> None:
 def test_int_steps_count_from_the_low_edge() -> None:
     stepped = RosRange(1, 11, 3, integer=True)
     assert [stepped(v) is None for v in (1, 4, 7, 10, 11)] == [True] * 5
-    assert stepped(3) == "3 is not on a step: within [1, 11] in steps of 3"
+    assert stepped(3) == "must be 1 plus a whole number of steps of 3 (range), got 3"
 
 
 def test_doubles_within_the_tolerance_of_either_edge_are_on_it() -> None:
     bounded = RosRange(1.0, 2.0, 0.0, integer=False)
     assert bounded(1.0 - 1e-7) is None and bounded(2.0 + 1e-7) is None
-    assert bounded(1.0 - 1e-5) == "0.99999 is out of range: within [1.0, 2.0]"
+    assert bounded(1.0 - 1e-5) == "must be within [1.0, 2.0] (range), got 0.99999"

@@ -78,7 +78,7 @@ def test_a_forbidden_value_and_a_broken_rule_are_violations(result: AuditResult)
     found = kinds(result, LOOSE)
     assert found[VIOLATION] == {"max_speed", ""}  # the range, then the rule (no parameter)
     texts = [f.text() for f in result.findings if f.node == LOOSE and f.kind == VIOLATION]
-    assert any("max_speed: 7.0 is out of range: within [0.0, 5.0]" in t for t in texts), texts
+    assert any("max_speed: must be within [0.0, 5.0] (range), got 7.0" in t for t in texts), texts
     assert any("rule 'one_weight_per_topic' broken" in t for t in texts), texts
     assert found[DRIFT_DEFAULT] == {"max_speed", "weights"}
 

@@ -101,7 +101,9 @@ def test_an_open_group_entry_is_checked_by_its_field(page: Page, remote: Service
     box = page.locator('[data-param-box="sensors.front.rate"]')
     box.fill("500")
     box.dispatch_event("change")
-    expect(page.locator('[data-param-error="sensors.front.rate"]')).to_contain_text("out of range")
+    expect(page.locator('[data-param-error="sensors.front.rate"]')).to_contain_text(
+        "sensors.front.rate: must be within"
+    )
     assert remote.get("sensors.front.rate") == [50.0]
 
 

@@ -63,7 +63,9 @@ def test_out_of_range_is_stopped_in_the_page(
     box = page.locator('[data-param-box="camera.width"]')
     box.fill("9000")
     box.dispatch_event("change")
-    expect(error(page, "camera.width")).to_contain_text("Parameter camera.width out of range")
+    expect(error(page, "camera.width")).to_contain_text(
+        "camera.width: must be within [64, 4096] (range), got"
+    )
     assert service_client(ros_harness, CAM).get("camera.width") == [640]
 
 

@@ -38,6 +38,10 @@ class Problem(Protocol):
     def message(self) -> str: ...
 
 
+READ_ONLY = "read-only: set it when the node starts (-p, a params file or launch)"
+"""Why a set of a ``read_only`` parameter is refused, by the node and by a remote client."""
+
+
 @dataclass(frozen=True, slots=True)
 class ParameterProblem:
     """A problem with a parameter: one the runtime finds with a value (at a set, at declare,

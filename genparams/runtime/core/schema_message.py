@@ -114,6 +114,7 @@ def param_from_json(described: Mapping[str, Any], name: str) -> ParamSpec:
         range=None if span is None else (span["min"], span["max"], span["step"]),
         choices=None if described["choices"] is None else frozen(described["choices"]),
         validators=tuple((rule, frozen(arg)) for rule, arg in described["validators"]),
+        aliases=tuple(described.get("aliases", ())),
     )
 
 

@@ -123,23 +123,29 @@ class RosRange:
             if value == self.low or value == self.high:  # rclpy: edges are always valid
                 return None
             if not self.low <= value <= self.high:
-                return "out of range"
+                return self._out_of_range()
             if self.step and (value - self.low) % self.step != 0:
-                return "not on a step"
+                return self._off_step()
             return None
         if math.isnan(value):
-            return "out of range"
+            return self._out_of_range()
         tol = ROS_RELATIVE_TOLERANCE
         at_edge = math.isclose(value, self.low, rel_tol=tol) or math.isclose(
             value, self.high, rel_tol=tol
         )
         if not (self.low < value < self.high or at_edge):
-            return "out of range"
+            return self._out_of_range()
         if self.step and not at_edge:
             steps = round((value - self.low) / self.step)
             if not math.isclose(self.low + steps * self.step, value, rel_tol=tol):
-                return "not on a step"
+                return self._off_step()
         return None
+
+    def _out_of_range(self) -> str:
+        return f"must be within [{self.low!r}, {self.high!r}] ({self.rule})"
+
+    def _off_step(self) -> str:
+        return f"must be {self.low!r} plus a whole number of steps of {self.step!r} ({self.rule})"
 
     def __call__(self, value: Any) -> str | None:
         items = value if self.each else (value,)
@@ -147,7 +153,7 @@ class RosRange:
             problem = self._problem(item)
             if problem is not None:
                 where = f"item {index} " if self.each else ""
-                return f"{where}{fmt(item)} is {problem}: {self.describe()}"
+                return f"{where}{problem}, got {fmt(item)}"
         return None
 
     def describe(self) -> str:

@@ -1,9 +1,17 @@
 """Old parameter names (``aliases:``) kept working after a rename.
 
 An old name is declared next to the current one, with the same type and
-descriptor. A pre-set callback mirrors every set of either name onto the
-other, so both are validated, stored and announced in one atomic change and
-always read the same; a set under the old name warns once.
+descriptor. genparams' set path mirrors every set of either name onto the
+other (``mirrored``), so both are validated, stored and announced in one atomic
+change and always read the same; a set under the old name warns once.
+
+Why in the set path, not in a pre-set callback: rclpy joins what its pre-set
+callbacks return, so a callback of genparams handing back the request would
+turn an application's refusal (its pre-set callback returning ``[]``) into a
+set, and it would read ``.name`` of every item before rclpy refuses one that is
+no Parameter (``TypeError``). In the set path the mirror sees the request the
+application's pre-set callbacks made, once rclpy checked its items; a set with
+no old name in it goes through untouched.
 """
 
 from __future__ import annotations
@@ -12,17 +20,12 @@ import array
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
-from rcl_interfaces.msg import SetParametersResult
-from rclpy.node import Node
 from rclpy.parameter import Parameter
 
-from genparams.runtime.core.problems import ParameterProblem, render_problems
+from genparams.runtime.core.problems import ParameterProblem
 from genparams.runtime.core.spec import CompiledParam
 from genparams.runtime.node.declaring import Declaration, descriptor_for, ros_parameter
 from genparams.runtime.node.deprecation import Notices
-from genparams.runtime.node.rewrites import add_rewrite
-
-_ACCEPTED = SetParametersResult(successful=True)
 
 
 def old_names_by_current(aliases: Mapping[str, str]) -> dict[str, tuple[str, ...]]:
@@ -36,12 +39,10 @@ def old_names_by_current(aliases: Mapping[str, str]) -> dict[str, tuple[str, ...
 class Aliases:
     def __init__(
         self,
-        node: Node,
         notices: Notices,
         aliases: Mapping[str, str],
         full_name: Callable[[str], str],
     ) -> None:
-        self.node = node
         self.notices = notices
         self.current_of = {full_name(old): full_name(cur) for old, cur in aliases.items()}
         self.old_of = {
@@ -63,28 +64,30 @@ class Aliases:
             out.append((ros_parameter(param, old, values[current]), descriptor))
         return out
 
-    def attach(self) -> None:
-        add_rewrite(self.node, self.pre_set)
-        self.node.add_on_set_parameters_callback(self.on_set)
-
-    def pre_set(self, parameters: list[Parameter]) -> list[Parameter]:
+    def mirrored(self, parameters: list[Parameter]) -> list[Parameter]:
         """The request plus the other name of every renamed parameter it sets."""
+        old_of, current_of = self.old_of, self.current_of
+        for parameter in parameters:  # a plain loop: most sets name no renamed parameter
+            if parameter.name in current_of or parameter.name in old_of:
+                break
+        else:
+            return parameters
         requested = {parameter.name for parameter in parameters}
         mirrored = []
         for parameter in parameters:
-            current = self.current_of.get(parameter.name)
+            current = current_of.get(parameter.name)
             if current is not None:
                 self.notices.renamed(parameter.name, current)
-                others: tuple[str, ...] = (current, *self.old_of[current])
+                others: tuple[str, ...] = (current, *old_of[current])
             else:
-                others = self.old_of.get(parameter.name, ())
+                others = old_of.get(parameter.name, ())
             for other in others:
                 if other not in requested and other != parameter.name:
                     requested.add(other)
                     mirrored.append(Parameter(other, parameter.type_, parameter.value))
         return [*parameters, *mirrored]
 
-    def on_set(self, parameters: Sequence[Parameter]) -> SetParametersResult:
+    def problems(self, parameters: Sequence[Parameter]) -> list[ParameterProblem]:
         """Both names of one parameter must change together, to one value."""
         values = {parameter.name: parameter.value for parameter in parameters}
         reasons = []
@@ -102,9 +105,7 @@ class Aliases:
                         old, f"is the old name of {current}, but was given a different value"
                     )
                 )
-        if reasons:
-            return SetParametersResult(successful=False, reason=render_problems(reasons))
-        return _ACCEPTED
+        return reasons
 
 
 def _same(a: Any, b: Any) -> bool:

@@ -23,7 +23,7 @@ from genparams.runtime.core.entries import resolve_all
 from genparams.runtime.core.errors import ParameterDeclarationError
 from genparams.runtime.core.naming import check_prefix, join_prefix, strip_prefix
 from genparams.runtime.core.params_view import ParamsView
-from genparams.runtime.core.problems import ParameterProblem
+from genparams.runtime.core.problems import READ_ONLY, ParameterProblem
 from genparams.runtime.core.rule_check import broken_rules
 from genparams.runtime.core.spec import CompiledParam, compile_schema
 from genparams.runtime.core.tree import (
@@ -54,7 +54,8 @@ class Binding(Generic[P]):
         self.node = node
         self.prefix = prefix
         self.owned = owned  # full ROS name -> parameter
-        self.old_names: frozenset[str] = frozenset()  # full old names (aliases)
+        self.old_names: dict[str, CompiledParam] = {}  # full old name (aliases) -> parameter
+        self.aliases: Aliases | None = None
         self.lock = threading.Lock()  # guards the subscriber list
         self.subscribers: list[Callable[[Changes[P]], None]] = []
         self.current: P  # the frozen root: snapshots hand this out
@@ -121,7 +122,7 @@ class Binding(Generic[P]):
 
         reader.release_predeclared()
         notices = Notices(node)
-        aliases = Aliases(node, notices, compiled.aliases, full)
+        aliases = Aliases(notices, compiled.aliases, full)
         owned = {full(name): param for name, param in parameters.items()}
         by_full_name = {full(name): value for name, value in values.items()}
         declare_batch(
@@ -135,7 +136,7 @@ class Binding(Generic[P]):
         binding: Binding[P] = cls(node, prefix, owned)
         binding.sets = sets
         binding.schema_name = params_cls.__name__
-        binding.old_names = frozenset(aliases.current_of)
+        binding.old_names = {old: owned[cur] for old, cur in aliases.current_of.items()}
         binding.has_rules = bool(compiled.rules)
         every = (*compiled.parameters.values(), *compiled.templates.values())
         binding.has_configure_only = any(p.spec.configure_only for p in every)
@@ -146,13 +147,15 @@ class Binding(Generic[P]):
         object.__setattr__(live, "_binding", binding)
         binding.live = live
         if any(param.type.is_array for param in every):
-            old_names = {old: owned[cur] for old, cur in aliases.current_of.items()}
-            sets.retype_empty_arrays(collections.ChainMap(binding.owned, old_names))
+            sets.retype_empty_arrays(collections.ChainMap(binding.owned, binding.old_names))
         # Mapped groups, old names and deprecations each watch the node on their own.
         entry_owner = EntryOwner(node, prefix, binding.owned, sets.check)
         binding.mapped = MappedEntries.attach(entry_owner, compiled, parameters, notices)
+        if binding.mapped is not None:
+            sets.explain_undeclared_entries()
         if compiled.aliases:
-            aliases.attach()
+            binding.aliases = aliases
+            sets.add_renames(aliases.mirrored)
         DeprecationWatch.attach(node, notices, binding.owned, compiled)
         return binding
 
@@ -163,6 +166,10 @@ class Binding(Generic[P]):
         self, parameters: Sequence[Parameter], declaring: bool
     ) -> dict[CompiledParam, Any] | list[ParameterProblem]:
         """This class's part of a request, typed, or the problems it is refused for."""
+        if self.aliases is not None and not declaring:
+            renamed = self.aliases.problems(parameters)
+            if renamed:
+                return renamed
         typed, reasons = check_each(self.owned, parameters)
         if self.mapped is not None and not reasons:
             reasons.extend(self.mapped.check(self.current, parameters, typed, declaring))
@@ -179,6 +186,15 @@ class Binding(Generic[P]):
 
     def full_name(self, name: str) -> str:
         return join_prefix(self.prefix, name)
+
+    def refusals(self, parameters: Sequence[Parameter]) -> list[ParameterProblem]:
+        """Why each of this class's values in a request (current or old names) is refused on
+        its own: read-only, then as ``check_each`` refuses it."""
+        return refusals(collections.ChainMap(self.owned, self.old_names), parameters)
+
+    def undeclared_entries(self, parameters: Sequence[Parameter]) -> list[ParameterProblem]:
+        mapped = self.mapped
+        return [] if mapped is None else mapped.strays(parameters)
 
     def commit(self, updates: dict[CompiledParam, Any]) -> bool:
         """Commit values the node stored; False (nothing done) when they change mapped keys."""
@@ -302,6 +318,22 @@ class Binding(Generic[P]):
 
 
 _set_slot = object.__setattr__  # a module global: no attribute lookup on every set
+
+
+def refusals(
+    own: Mapping[str, CompiledParam], parameters: Sequence[Parameter]
+) -> list[ParameterProblem]:
+    """Why each value in a request of a parameter of ``own`` (by full name, old names
+    included) is refused on its own: read-only, then as ``check_each`` refuses it. The
+    node words rclpy's descriptor refusals with these; the tuning page likewise."""
+    problems = []
+    for parameter in parameters:
+        param = own.get(parameter.name)
+        if param is not None and param.spec.read_only:
+            problems.append(ParameterProblem(parameter.name, READ_ONLY))
+        elif param is not None:
+            problems.extend(check_each(own, [parameter])[1])
+    return problems
 
 
 def check_each(

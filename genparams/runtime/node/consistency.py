@@ -40,7 +40,7 @@ from collections.abc import Callable, MutableMapping, Sequence
 from typing import TYPE_CHECKING, Any, Protocol
 
 from rcl_interfaces.msg import SetParametersResult
-from rclpy.exceptions import ParameterImmutableException
+from rclpy.exceptions import ParameterImmutableException, ParameterNotDeclaredException
 from rclpy.parameter import Parameter
 
 from genparams.runtime.core.errors import GenparamsError
@@ -83,6 +83,12 @@ class DeclaredClass(Protocol):
     def reshape(self, updates: dict[CompiledParam, Any]) -> None:
         """Commit values that change its shape (mapped keys), once every class committed."""
 
+    def refusals(self, parameters: Sequence[Parameter]) -> list[ParameterProblem]:
+        """Why it refuses each of its values in a request on its own: read-only, type, rules."""
+
+    def undeclared_entries(self, parameters: Sequence[Parameter]) -> list[ParameterProblem]:
+        """A problem per entry of its mapped groups the request names that is not declared."""
+
 
 class UndeclareRefusedError(ParameterImmutableException, GenparamsError):
     """``node.undeclare_parameter`` of a parameter a genparams class declares.
@@ -99,6 +105,17 @@ class UndeclareRefusedError(ParameterImmutableException, GenparamsError):
         )
         Exception.__init__(self, render_problem(refusal))
         self.name = name
+
+
+class UndeclaredEntryError(ParameterNotDeclaredException, GenparamsError):
+    """A set naming an entry of a mapped group whose key is not in its key list.
+
+    rclpy's ``ParameterNotDeclaredException`` (the parameter services answer it as a
+    refused set, as they answer rclpy's), with genparams' reason naming each entry.
+    """
+
+    def __init__(self, reason: str) -> None:
+        Exception.__init__(self, reason)
 
 
 # One set in progress on the node: whether it declares (declarations and entry changes
@@ -124,6 +141,8 @@ class NodeSets:
         # a request takes its declared type before rclpy checks it (rewrites.py).
         self.arrays: collections.ChainMap[str, CompiledParam] = collections.ChainMap()
         self.retype: Rewrite | None = None
+        self.renames: tuple[Rewrite, ...] = ()  # old names mirrored, one per class that has any
+        self.explaining = False  # undeclared mapped entries are refused by name
         self.unlocked_set = internals.set_path(node)
         self.run_post_set = internals.post_set_caller(node)
         self.undeclare = internals.replace_undeclare(node, self.undeclare_checked)
@@ -139,17 +158,43 @@ class NodeSets:
             retype = self.retype
             if retype is not None:
                 parameter_list = retype(parameter_list)
+            declaring = descriptors is not None
+            requested = parameter_list
+            if self.renames and not declaring:
+                for rename in self.renames:
+                    parameter_list = rename(parameter_list)
             frames = self.frames
-            frames.append((descriptors is not None, {}))
+            frames.append((declaring, {}))
             try:
                 result: SetParametersResult = self.unlocked_set(
                     parameter_list, descriptors, allow_not_set_type
                 )
+                if not result.successful and not declaring:
+                    result = self.in_own_words(requested, parameter_list, result)
             finally:
                 frames.pop()
                 if not frames and self.deliveries and not self.draining:
                     self.drain()
             return result
+
+    def add_renames(self, rename: Rewrite) -> None:
+        """Pass every set (not declarations) through ``rename`` once rclpy checked its items."""
+        self.renames = (*self.renames, rename)
+
+    def in_own_words(
+        self, requested: list[Parameter], checked: list[Parameter], refused: SetParametersResult
+    ) -> SetParametersResult:
+        """A set rclpy's descriptor check refused for a value a class owns: the classes'
+        reasons instead (parameter, rule and value) for the values as requested (an old
+        name, not the current name it was mirrored onto), found by the checks of their
+        on-set callback. Any other refusal is passed on as it came."""
+        first = internals.first_descriptor_refusal(self.node, checked)
+        if first is None or self.owner_of(first) is None:
+            return refused
+        problems = [problem for b in self.bindings for problem in b.refusals(requested)]
+        if not problems:  # cannot happen (tests compare both verdicts); rclpy's word holds
+            return refused
+        return SetParametersResult(successful=False, reason=render_problems(problems))
 
     def retype_empty_arrays(self, declared: MutableMapping[str, CompiledParam]) -> None:
         """Give an empty array set on any of ``declared`` (full name -> parameter, read at
@@ -201,6 +246,36 @@ class NodeSets:
             if binding.declares(full_name):
                 return binding
         return None
+
+    def explain_undeclared_entries(self) -> None:
+        """Refuse a set of an undeclared mapped entry naming it, not in rclpy's words only.
+
+        rclpy checks that a set names declared parameters after its pre-set callbacks,
+        outside the lock, and its message names none of them (it consumes the names it
+        reports); its check still runs first and decides, genparams words its refusal.
+        """
+        if self.explaining:
+            return
+        self.explaining = True
+        rclpy_check = internals.declared_check(self.node)
+
+        def check_declared(parameter_list: list[Parameter]) -> None:
+            try:
+                rclpy_check(parameter_list)
+            except ParameterNotDeclaredException as exc:
+                entries = [p for b in self.bindings for p in b.undeclared_entries(parameter_list)]
+                if not entries:
+                    raise
+                named = {problem.key for problem in entries}
+                reason = render_problems(entries)
+                node = self.node
+                if any(
+                    p.name not in named and not node.has_parameter(p.name) for p in parameter_list
+                ):
+                    reason = f"{reason}; {exc}"  # other undeclared names, in rclpy's words
+                raise UndeclaredEntryError(reason) from None
+
+        internals.replace_declared_check(self.node, check_declared)
 
     def undeclare_checked(self, name: str) -> None:
         """``node.undeclare_parameter``, refused for what a class declares, as the services are."""

@@ -135,12 +135,9 @@ class MappedEntries:
         declared (bad override, refused by another on-set callback). ``current`` is the
         owner's committed view."""
         if not declaring:  # the entries' own declaration round declares them
-            strays = [p.name for p in parameters if self.is_undeclared_entry(p.name)]
+            strays = self.strays(parameters)
             if strays:
-                return [
-                    ParameterProblem(name, "no such entry: its key is not in the key list")
-                    for name in strays
-                ]
+                return strays
         proposed = {
             param.name: value
             for param, value in typed.items()
@@ -169,6 +166,14 @@ class MappedEntries:
         if refusal is None:
             return []
         return [ParameterProblem(changed, f"the new entries were refused: {refusal}")]
+
+    def strays(self, parameters: Sequence[Parameter]) -> list[ParameterProblem]:
+        """A problem per parameter of a request that has an entry's name but is not declared."""
+        return [
+            ParameterProblem(p.name, "no such entry: its key is not in the key list")
+            for p in parameters
+            if self.is_undeclared_entry(p.name)
+        ]
 
     def is_undeclared_entry(self, full_name: str) -> bool:
         """``full_name`` has the shape of an entry of the owner but is not declared."""

@@ -17,7 +17,13 @@ Behaviours relied on (rclpy 7.1, ``rclpy/node.py``):
   run first and a callback appended at the end runs after every other one.
 - ``Node._post_set_parameters_callbacks`` likewise: newest first.
 - Pre-set callbacks run in ``Node._set_parameters_atomically`` before the
-  common path, so outside genparams' per-node lock.
+  common path, so outside genparams' per-node lock; then
+  ``Node._check_undeclared_parameters(parameter_list)`` raises ``TypeError`` for
+  an item that is no Parameter and ``ParameterNotDeclaredException`` for an
+  undeclared name, before the common path.
+- ``Node._descriptors``: the node's descriptors by name, which the common path
+  checks each value against first (``_apply_descriptor``), refusing at the first
+  value that fails.
 - ``Node.undeclare_parameter`` deletes from ``_parameters`` and ``_descriptors``
   without calling any callback.
 - ``Node._parameter_overrides``: the values a node was started with.
@@ -97,6 +103,28 @@ def set_with_descriptors(
 ) -> SetParametersResult:
     """One atomic change that may declare (new descriptors) and undeclare (NOT_SET) together."""
     return set_path(node)(list(parameters), dict(descriptors))
+
+
+def declared_check(node: Node) -> Callable[[list[Parameter]], None]:
+    """rclpy's check, before the common set path, that a set names declared parameters."""
+    check: Callable[[list[Parameter]], None] = node._check_undeclared_parameters
+    return check
+
+
+def replace_declared_check(node: Node, wrapper: Callable[[list[Parameter]], None]) -> None:
+    node._check_undeclared_parameters = wrapper  # type: ignore[method-assign, assignment]
+
+
+def first_descriptor_refusal(node: Node, parameters: Sequence[Parameter]) -> str | None:
+    """The name of the first value of a set the common path's descriptor check refuses, as
+    it runs it (the node's descriptors, read-only checked); None if it refuses none."""
+    descriptors = node._descriptors
+    for parameter in parameters:
+        descriptor = descriptors.get(parameter.name)
+        if descriptor is not None and not descriptor_check(node, parameter, descriptor).successful:
+            name: str = parameter.name
+            return name
+    return None
 
 
 def descriptor_check(

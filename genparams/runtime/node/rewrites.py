@@ -1,33 +1,24 @@
-"""Requests rewritten before rclpy checks them: one pre-set callback per node.
+"""Requests rewritten inside genparams' set path, before rclpy checks them.
 
-rclpy concatenates the lists its pre-set callbacks return, so two callbacks
-that each hand back the request would make it set every parameter twice.
-genparams installs a single pre-set callback per node and passes the request
-through each binding's rewrite in turn.
-
-Old names are mirrored onto current names this way (``aliases.py``). Typed
-empty arrays (below) are not a pre-set callback: the node's set path applies
-them (``consistency.NodeSets``), so a class without old names adds no pre-set
-callback and no list copy to a set.
+genparams adds no pre-set callback: rclpy joins the lists its pre-set callbacks
+return, so a callback of genparams handing back the request would turn an
+application's refusal (a pre-set callback returning ``[]``) into a set, and
+would read each item before rclpy refuses one that is no Parameter. Rewrites
+run in the node's set path instead (``consistency.NodeSets``), under its set
+lock, after rclpy ran the pre-set callbacks and checked the items: typed empty
+arrays (below) and the other names of renamed parameters (``aliases.py``).
+A class with neither adds no list copy to a set.
 """
 
 from __future__ import annotations
 
-import threading
-from collections.abc import Callable, Mapping, Sequence
-from typing import TYPE_CHECKING
+from collections.abc import Callable, Mapping
 
 from rclpy.parameter import Parameter
 
 from genparams.runtime.core.spec import CompiledParam
 
-if TYPE_CHECKING:
-    from rclpy.node import Node
-
 Rewrite = Callable[[list[Parameter]], list[Parameter]]
-
-_ATTRIBUTE = "_genparams_rewrites"
-_INSTALLING = threading.Lock()
 
 _ARRAY_TYPES = (
     Parameter.Type.BYTE_ARRAY,
@@ -36,29 +27,6 @@ _ARRAY_TYPES = (
     Parameter.Type.DOUBLE_ARRAY,
     Parameter.Type.STRING_ARRAY,
 )
-
-
-def add_rewrite(node: Node, rewrite: Rewrite) -> None:
-    """Run ``rewrite`` on every set request of ``node``, after those added before it."""
-    with _INSTALLING:
-        rewrites: list[Rewrite] | None = getattr(node, _ATTRIBUTE, None)
-        if rewrites is None:
-            rewrites = []
-            setattr(node, _ATTRIBUTE, rewrites)
-            node.add_pre_set_parameters_callback(_chain(rewrites))
-        rewrites.append(rewrite)
-
-
-def _chain(rewrites: list[Rewrite]) -> Callable[[Sequence[Parameter]], list[Parameter]]:
-    def pre_set(parameters: Sequence[Parameter]) -> list[Parameter]:
-        # rclpy copies what this returns into a list of its own, so an unchanged
-        # request is handed back as it came: a set is on the hot path.
-        request = parameters if isinstance(parameters, list) else list(parameters)
-        for rewrite in tuple(rewrites):
-            request = rewrite(request)
-        return request
-
-    return pre_set
 
 
 def typed_empty_arrays(declared: Mapping[str, CompiledParam]) -> Rewrite:

@@ -29,7 +29,7 @@ from genparams.runtime.core.entries import (
 from genparams.runtime.core.errors import RemoteParameterError, RemoteSetError
 from genparams.runtime.core.naming import check_prefix, is_entry_key, join_prefix, strip_prefix
 from genparams.runtime.core.params_view import ParamsView
-from genparams.runtime.core.problems import ParameterProblem, render_problems
+from genparams.runtime.core.problems import READ_ONLY, ParameterProblem, render_problems
 from genparams.runtime.core.spec import CompiledParam, compile_schema
 from genparams.runtime.core.suggest import did_you_mean
 from genparams.runtime.core.tree import build_tree
@@ -292,7 +292,7 @@ class RemoteParams(Generic[P]):
 
 def _check_one(param: CompiledParam, value: Any) -> str | tuple[Any]:
     if param.spec.read_only:
-        return "read-only: set it when the node starts (-p, a params file or launch)"
+        return READ_ONLY
     try:
         typed = param.type.coerce_default(value)
     except ValueTypeError as exc:
