@@ -64,6 +64,18 @@ def python_literal(value: Any) -> str:
     raise TypeError(f"no Python literal for {type(value).__name__}")
 
 
+# Python reads a coding declaration from a comment on line 1 or 2 (PEP 263); a file name
+# written there as 'coding=utf_7 x.yaml' would make the module be read as UTF-7.
+_CODING_DECLARATION = re.compile(r"(?<=coding)[:=]")
+
+
+def comment_literal(text: str) -> str:
+    """``text`` as a Python literal fit for a header comment: it never declares a coding."""
+    return _CODING_DECLARATION.sub(
+        lambda match: f"\\x{ord(match.group()):02x}", python_literal(text)
+    )
+
+
 LINE_LENGTH = 100
 
 
@@ -138,6 +150,7 @@ def environment() -> jinja2.Environment:
         autoescape=False,
     )
     env.filters["py"] = python_literal
+    env.filters["comment_literal"] = comment_literal
     env.filters["keyword_argument"] = keyword_argument
     env.filters["assignment"] = assignment
     env.filters["one_line"] = one_line

@@ -25,7 +25,6 @@ import re
 import socket
 from collections.abc import Iterable
 from dataclasses import dataclass
-from http.cookies import SimpleCookie
 from urllib.parse import parse_qs
 
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
@@ -97,16 +96,34 @@ def host_names(bound: str) -> frozenset[str]:
     return frozenset(names)
 
 
+class RefusedError(GenparamsError):
+    def __init__(self, status: int, reason: str) -> None:
+        super().__init__(reason)
+        self.status = status
+        self.reason = reason
+
+
+def _port(text: str) -> int:
+    """A ``Host`` port: one to five ASCII digits ('²' and '١' are digits to ``str.isdigit``)."""
+    if not (text.isascii() and text.isdigit() and len(text) <= 5):
+        raise RefusedError(400, f"Host port {text!r} is not a port number")
+    return int(text)
+
+
 def split_host(value: str) -> tuple[str, int | None]:
-    """A ``Host`` header as (name, port): ``name:port`` or ``[v6]:port``; port None if absent."""
+    """A ``Host`` header as (name, port): ``name:port`` or ``[v6]:port``; port None if absent.
+
+    A port that is not a number is a :class:`RefusedError` (400).
+    """
     value = value.strip().lower()
     if value.startswith("["):
         name, bracket, rest = value.partition("]")
-        port = rest[1:] if rest.startswith(":") else ""
-        return name + bracket, int(port) if port.isdigit() else None
+        if rest.startswith(":"):
+            return name + bracket, _port(rest[1:])
+        return name + bracket, None
     name, colon, port = value.rpartition(":")
     if colon and ":" not in name:
-        return name, int(port) if port.isdigit() else -1
+        return name, _port(port)
     return value, None
 
 
@@ -137,13 +154,6 @@ class Policy:
 def cookie_name(port: int | None) -> str:
     """One cookie per port: browsers share a host's cookies across its ports."""
     return f"genparams-tune-{port or 80}"
-
-
-class RefusedError(GenparamsError):
-    def __init__(self, status: int, reason: str) -> None:
-        super().__init__(reason)
-        self.status = status
-        self.reason = reason
 
 
 class Gate:
@@ -273,12 +283,18 @@ def server_port(scope: Scope) -> int | None:
 
 
 def cookies(header: str) -> dict[str, str]:
-    jar: SimpleCookie = SimpleCookie()
-    try:
-        jar.load(header)
-    except Exception:  # a malformed Cookie header carries no token
-        return {}
-    return {name: morsel.value for name, morsel in jar.items()}
+    """A ``Cookie`` header's cookies, read item by item: one item no parser could read
+    (``prefs={"a":1}``, ``session=a b``, a bare ``seen``) does not hide the others.
+    The first of repeated names counts, as browsers send the most specific first."""
+    jar: dict[str, str] = {}
+    for item in header.split(";"):
+        name, equals, value = item.partition("=")
+        name, value = name.strip(), value.strip()
+        if equals and name:
+            if len(value) >= 2 and value[0] == value[-1] == '"':
+                value = value[1:-1]
+            jar.setdefault(name, value)
+    return jar
 
 
 def with_headers(send: Send, extra: Iterable[tuple[bytes, bytes]]) -> Send:

@@ -9,6 +9,9 @@ from __future__ import annotations
 
 import builtins
 import keyword
+import subprocess
+import sys
+import tokenize
 from pathlib import Path
 
 import pytest
@@ -138,3 +141,32 @@ def test_names_that_cannot_work_are_schema_errors(name: str, message: str) -> No
     schema = f"genparams: 1\nname: n\nparameters:\n  {quoted(name)}: {{type: int, default: 1}}\n"
     with pytest.raises(SchemaError, match=message):
         genparams.generate("names.yaml", schema)
+
+
+def test_no_file_name_declares_the_coding_of_the_generated_module(tmp_path: Path) -> None:
+    """Line 1 names the schema file: a name like 'coding=utf_7 x.yaml' must not make Python
+    read the module as UTF-7, where '+ACIACg-' in a description is a quote and a newline."""
+    marker = tmp_path / "PWNED"
+    description = f"+ACIACg-__import__('pathlib').Path({str(marker)!r}).touch()+AAoAIg-"
+    schema = tmp_path / "coding=utf_7 evil.yaml"
+    schema.write_text(
+        "genparams: 1\nname: evil\n"
+        f"description: {quoted(description)}\n"
+        "parameters:\n  x: {type: int, default: 1}\n",
+        encoding="utf-8",
+    )
+    module_path = tmp_path / "evil_params.py"
+    done = subprocess.run(
+        [sys.executable, "-m", "genparams", "generate", str(schema), "-o", str(module_path)],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert done.returncode == 0, done.stderr
+    with module_path.open("rb") as module_file:
+        assert tokenize.detect_encoding(module_file.readline)[0] == "utf-8"
+    first_line = module_path.read_text(encoding="utf-8").splitlines()[0]
+    assert first_line.endswith(' from "coding\\x3dutf_7 evil.yaml".')
+    module = import_file(module_path)
+    assert module.__doc__ == description
+    assert not marker.exists()

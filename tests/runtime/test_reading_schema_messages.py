@@ -104,6 +104,11 @@ BAD_EDITS: list[tuple[str, Edit, str]] = [
     ("unknown validator", set_in_first_param(validators=[["drop_table", 1]]), "unknown validator"),
     ("validator as text", set_in_first_param(validators=["gt"]), "validators[0]: expected [rule"),
     ("bad validator argument", set_in_first_param(validators=[["gt", "x"]]), "(ceiling): gt"),
+    (
+        "a pattern that expands to a gigabyte",
+        set_in_first_param(validators=[["pattern", "(?:x{2000}){2000}"]]),
+        "(ceiling): pattern '(?:x{2000}){2000}' expands to more than 100,000 items",
+    ),
     ("no default", lambda m: m["classes"][0]["parameters"][0].pop("default"), "no 'default'"),
     ("rules as object", lambda m: m["classes"][0].update(rules={}), "rules: expected a list"),
     (

@@ -4,10 +4,12 @@ and the argument errors of building it from a schema."""
 from __future__ import annotations
 
 import math
+import re
 from typing import Any
 
 import pytest
 
+from genparams.runtime.core.pattern_cost import PatternCostError, check_pattern_cost
 from genparams.runtime.core.validator_kinds import ValidatorArgumentError, build_validator
 from genparams.runtime.core.validators import (
     Bounds,
@@ -231,6 +233,45 @@ def test_bad_arguments_say_why(rule: str, argument: Any, message: str) -> None:
 def test_a_pattern_that_does_not_compile_is_an_argument_error() -> None:
     with pytest.raises(ValidatorArgumentError, match=r"pattern '\(' is not a valid regex: "):
         build_validator("pattern", "(", "string")
+
+
+@pytest.mark.parametrize(
+    ("pattern", "message"),
+    [
+        ("(?:x{400}){400}", "expands to more than 100,000 items when compiled"),
+        ("(?:(?:x{50}){50}){50}", "expands to more than 100,000 items when compiled"),
+        ("(?:a|(?:b{400}){400})", "expands to more than 100,000 items when compiled"),
+        ("(?=(?:x{400}){400})", "expands to more than 100,000 items when compiled"),
+        ("(?:" * 2000 + "x" + ")" * 2000, "nests its groups too deeply"),
+        ("x" * 10_001, "is 10,001 characters long, more than the 10,000 a pattern may have"),
+    ],
+    ids=["product", "three deep", "in a branch", "in a lookahead", "deep", "long"],
+)
+def test_a_pattern_too_costly_to_compile_is_refused_before_compiling(
+    pattern: str, message: str
+) -> None:
+    with pytest.raises(ValidatorArgumentError, match=re.escape(message)):
+        build_validator("pattern", pattern, "string")
+    with pytest.raises(PatternCostError, match=re.escape(message)):
+        Pattern(pattern)
+
+
+@pytest.mark.parametrize(
+    "pattern", ["^[a-z]{1,63}$", "x{100000}", "(?:x{0,2000}){0,2000}", "(?:ab){2,}" * 100]
+)
+def test_patterns_within_the_bound_compile(pattern: str) -> None:
+    check_pattern_cost(pattern)
+    assert Pattern(pattern)("ab" * 2) in (None, f"must match {pattern!r} (pattern), got 'abab'")
+
+
+def test_the_pattern_time_limit_is_one_budget_for_a_whole_array() -> None:
+    """Each item takes about 2 ms to refuse: 400 of them together take far more than 50 ms."""
+    slow_item = "a" * 18 + "!"
+    assert Pattern("^(a|aa)+$|!")(slow_item) is None  # one item alone is well within the limit
+    reason = Pattern("^(a|aa)+$|!")(["!", *([slow_item] * 400)])
+    assert reason is not None
+    assert reason.startswith("item ")
+    assert "could not be matched against '^(a|aa)+$|!' (pattern) within 50 ms" in reason
 
 
 def test_values_are_shown_whole_up_to_60_characters() -> None:

@@ -112,6 +112,31 @@ def test_host_must_name_this_server(server: TuneServer) -> None:
         assert b"not this server" in answer.body
 
 
+@pytest.mark.parametrize(
+    "host", ["127.0.0.1:\u00b2", "[::1]:\u00b9", "localhost:1\u00b2", "127.0.0.1:" + "9" * 5000]
+)
+def test_a_host_port_that_is_not_a_number_is_400(server: TuneServer, host: str) -> None:
+    """'²' is a digit to str.isdigit but not to int(): refused before the token is checked."""
+    answer = http_call(server.port, "GET", "/api/config", token=TOKEN, headers={"Host": host})
+    assert answer.status == 400, answer.body
+    assert b"is not a port number" in answer.body
+
+
+@pytest.mark.parametrize(
+    "others",
+    ['prefs={"theme":"dark"}', "session=a b", "seen", 'a="unclosed', "=x", "\u00e9t\u00e9=1"],
+)
+def test_a_cookie_no_parser_reads_does_not_hide_the_token_cookie(
+    server: TuneServer, others: str
+) -> None:
+    name = f"genparams-tune-{server.port}"
+    for cookie in (f"{others}; {name}={TOKEN}", f"{name}={TOKEN}; {others}"):
+        answer = http_call(server.port, "GET", "/api/config", headers={"Cookie": cookie})
+        assert answer.status == 200, (cookie, answer.body)
+    wrong = http_call(server.port, "GET", "/api/config", headers={"Cookie": f"{others}; {name}=x"})
+    assert wrong.status == 403
+
+
 def test_origin_must_be_this_server(server: TuneServer, served: ServiceClient) -> None:
     before = served.get("gain")
     for origin in ("http://evil.test", f"http://localhost:{server.port + 1}", "null"):

@@ -16,6 +16,7 @@ from typing import Any
 import regex as regex_engine
 
 from genparams.runtime.core.errors import GenparamsError
+from genparams.runtime.core.pattern_cost import PatternCostError
 from genparams.runtime.core.types import INT64_MAX, INT64_MIN
 from genparams.runtime.core.validators import (
     ALL_TYPES,
@@ -120,6 +121,8 @@ def _pattern(arg: Any, _type: str) -> Pattern:
         raise ValidatorArgumentError(f"pattern must be a string, got {fmt(arg)}")
     try:
         return Pattern(arg)
+    except PatternCostError as exc:
+        raise ValidatorArgumentError(str(exc)) from None
     except (re.error, regex_engine.error) as exc:
         raise ValidatorArgumentError(f"pattern {arg!r} is not a valid regex: {exc}") from None
 

@@ -13,11 +13,14 @@ import importlib
 import math
 import operator
 import re
+import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
 import regex as regex_engine
+
+from genparams.runtime.core.pattern_cost import check_pattern_cost
 
 # rclpy compares doubles against range bounds and steps with this tolerance.
 ROS_RELATIVE_TOLERANCE = 1e-6
@@ -249,7 +252,8 @@ class Length:
 
 # A pattern like '^(a|aa)+$' backtracks exponentially on some values; a parameter set
 # from any node on the network must not stall the node, nor a schema default the
-# generator. Matching gives up after this long and the value is refused.
+# generator. Matching a value (a string, or every item of an array together) gives up
+# after this long and the value is refused.
 PATTERN_TIMEOUT_S = 0.05
 
 
@@ -262,6 +266,7 @@ class Pattern:
     _compiled: regex_engine.Pattern[str] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
+        check_pattern_cost(self.regex)  # before any engine expands its counted repeats
         re.compile(self.regex)  # the syntax users write, with re's error messages
         object.__setattr__(
             self, "_compiled", regex_engine.compile(self.regex, flags=regex_engine.V0)
@@ -269,10 +274,15 @@ class Pattern:
 
     def __call__(self, value: Any) -> str | None:
         items = (value,) if isinstance(value, str) else value
+        # One time budget for the whole value: an array of many items shares it.
+        deadline = time.monotonic() + PATTERN_TIMEOUT_S
         for index, item in enumerate(items):
             where = "" if isinstance(value, str) else f"item {index} "
             try:
-                found = self._compiled.search(item, timeout=PATTERN_TIMEOUT_S)
+                left = deadline - time.monotonic()
+                if left <= 0:
+                    raise TimeoutError
+                found = self._compiled.search(item, timeout=left)
             except TimeoutError:
                 return (
                     f"{where}could not be matched against {self.regex!r} ({self.rule}) within "
