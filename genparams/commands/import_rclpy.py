@@ -13,7 +13,7 @@ from genparams.integration.writing import write_all
 from genparams.outputs.schema_yaml import schema_yaml
 from genparams.rclpy_import.convert import APPROXIMATE, LEFT_OUT, Imported
 from genparams.rclpy_import.node_file import NodeFileError, import_node
-from genparams.rclpy_import.patch import patch_diff
+from genparams.rclpy_import.patch import patch_diff, unchanged_reason
 from genparams.schema.errors import SchemaError
 from genparams.schema.loader import MAX_BYTES
 
@@ -57,8 +57,7 @@ def run(args: argparse.Namespace) -> int:
     if not imported.imported_names:
         _report(imported)
         raise CommandError(
-            f"genparams import-rclpy: {file}: no parameter could be imported: nothing written",
-            exit_code=1,
+            f"genparams import-rclpy: {file}: no parameter could be imported: nothing written"
         )
     schema = _header(args.source.name, node.unit_name) + schema_yaml(imported.data)
     try:  # the result must be a schema genparams accepts, or nothing is written
@@ -78,7 +77,7 @@ def run(args: argparse.Namespace) -> int:
         report("the schema is not written without -o SCHEMA")
     if diff is not None:
         if not diff:
-            report("the patch changes nothing: only declarations on self in a class are rewritten")
+            report(f"the patch changes nothing: {unchanged_reason(node)}")
         sys.stdout.write(diff)
     return 1 if imported.warnings else 0
 

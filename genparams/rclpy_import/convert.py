@@ -222,7 +222,7 @@ class _Converter:
                 return LEFT_OUT
             place, reason = self.per_item(found)
             if place is None:
-                self.warn(at, "", f"{reason}: parameter left out")
+                self.warn(at, _written_name(found), f"{reason}: parameter left out")
                 return LEFT_OUT
             name = place.key
         else:
@@ -230,19 +230,21 @@ class _Converter:
         if not isinstance(name, str):
             self.warn(at, "", f"the name {name!r} is not a string: parameter left out")
             return LEFT_OUT
+        # a per-item parameter's messages name it as written (``offsets.{joint}``)
+        shown = _written_name(found) if place is not None and not place.tail else name
         if found.nested is not None:
-            self.warn(at, name, f"declared inside {found.nested}: parameter left out")
+            self.warn(at, shown, f"declared inside {found.nested}: parameter left out")
             return LEFT_OUT
         when: dict[str, Any] | None = None
         if found.condition is not None:
             when, reason = self.when(found)
             if when is None:
-                self.warn(at, name, f"declared only under a condition ({found.condition}): "
+                self.warn(at, shown, f"declared only under a condition ({found.condition}): "
                           f"{reason}: parameter left out")  # fmt: skip
                 return LEFT_OUT
         from_item = place is not None and place.tail and _computed_from_item(found)
         if found.value.problem is not None and not from_item:
-            self.warn(at, name, f"value computed at run time ({found.value.problem.what}): "
+            self.warn(at, shown, f"value computed at run time ({found.value.problem.what}): "
                       "parameter left out")  # fmt: skip
             return LEFT_OUT
         if place is not None and place.tail:
@@ -250,14 +252,13 @@ class _Converter:
         else:
             problem = self.name_problem(name)
         if problem is not None:
-            self.warn(at, name, f"{problem}: parameter left out")
+            self.warn(at, shown, f"{problem}: parameter left out")
             return LEFT_OUT
         leaf, problem = _typed_leaf(found)
         if leaf is None:
-            self.warn(at, name, f"{problem}: parameter left out")
+            self.warn(at, shown, f"{problem}: parameter left out")
             return LEFT_OUT
         if place is not None and leaf.get("optional"):
-            shown = place.key if place.tail else place.head
             self.warn(at, shown, f"one parameter per item of {found.runtime_loop}, with no value: "
                       f"{place.what} needs one: parameter left out")  # fmt: skip
             return LEFT_OUT
@@ -266,21 +267,22 @@ class _Converter:
         if from_item:
             assert found.value_node is not None
             del leaf["default"]
-            self.warn(at, name, f"a default computed from the item ({unparsed(found.value_node)}): "
+            computed = unparsed(found.value_node)
+            self.warn(at, shown, f"a default computed from the item ({computed}): "
                       "one schema default serves every entry: imported with none, so each "
                       "entry must be given a value")  # fmt: skip
             exact = False
         if found.read == "":
-            self.warn(at, name, "read with .value, the params file deciding its type: imported "
+            self.warn(at, shown, "read with .value, the params file deciding its type: imported "
                       "as type: any (state its type in the schema)")  # fmt: skip
             exact = False
         if schema_type == "byte_array":
             self.note(
-                at, name, "an empty list: rclpy declares a byte_array, and so does the schema"
+                at, shown, "an empty list: rclpy declares a byte_array, and so does the schema"
             )
-        exact = self.descriptor(found, name, schema_type, leaf) and exact
+        exact = self.descriptor(found, shown, schema_type, leaf) and exact
         if found.ignore_override.problem is not None or found.ignore_override.value:
-            self.warn(at, name, "ignore_override: genparams always applies overrides: imported "
+            self.warn(at, shown, "ignore_override: genparams always applies overrides: imported "
                       "without it")  # fmt: skip
             exact = False
         if place is not None and not place.open:
@@ -399,6 +401,11 @@ class _Converter:
         if name in self.first:
             where = self.location(self.first[name].at)
             return f"declared again (first at {where.line}:{where.column}; rclpy refuses it)"
+        if "/" in name and is_ros_name(name.replace("/", ".")):
+            return (
+                "a name holding '/': rclpy accepts it, a schema names parameters by dotted "
+                "tokens (rename it with '.' to keep it)"
+            )
         if name != "*" and not is_ros_name(name):
             return "not a name genparams declares (dotted tokens of letters, digits and _)"
         if name in NODE_PARAMETERS:
@@ -696,6 +703,15 @@ def item_place(found: Found) -> ItemPlace | None:
     if tail and not (tail.startswith(".") and is_ros_name(tail[1:])):
         return None
     return ItemPlace(head[:-1], tail[1:], open=found.loop_prefix is not None)
+
+
+def _written_name(found: Found) -> str:
+    """A name built from a loop's item as the source writes it: ``offsets.{joint}``."""
+    place = item_place(found)
+    if place is None:
+        return ""
+    item = "{" + (found.loop_variable or "item") + "}"
+    return ".".join(p for p in (place.head, item, place.tail) if p)
 
 
 def _name_parts(node: ast.AST | None) -> list[str | None] | None:

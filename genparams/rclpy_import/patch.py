@@ -94,6 +94,22 @@ def patch_diff(node: ImportedNode, file: str) -> str:
                    for line in lines)  # fmt: skip
 
 
+def unchanged_reason(node: ImportedNode) -> str:
+    """Why the patch of ``node`` changes nothing, for the message."""
+    if not isinstance(node.unit.node, ast.ClassDef):
+        return (
+            "the module's functions declare the parameters: only declarations on self in "
+            "a class are rewritten"
+        )
+    declared = [f for f, _ in node.imported.outcome if f.read is None]
+    if declared and not any(f.receiver_is_self for f in declared):
+        return "only declarations on self in a class are rewritten"
+    return (
+        "every declaring statement also declares a parameter left out (see warnings), so "
+        "it stays as written"
+    )
+
+
 def patched_source(node: ImportedNode, file: str) -> str:
     if not isinstance(node.unit.node, ast.ClassDef):
         return node.source  # declarations on other receivers: left to the author
@@ -118,6 +134,7 @@ class _Patcher:
         self.edits: list[_Edit] = []
         self.removed: list[ast.stmt] = []
         self.removals: dict[int, _Edit] = {}
+        self.kept: list[ast.stmt] = []  # declare_parameters statements keeping part of a list
 
     def run(self) -> str:
         patchable = self.patchable()
@@ -129,8 +146,12 @@ class _Patcher:
                 statement = self.statement_of(automatic)
                 at = self.source.starts[statement.end_lineno or statement.lineno]
                 self.edits.append(_Edit(at, at, f"{self.source.indent(statement)}{declare}\n"))
-        elif not patchable:
+        elif not patchable and not self.kept:
             return self.node.source
+        elif not patchable:  # a list imported in part: genparams declares before it
+            first = min(self.kept, key=lambda s: (s.lineno, s.col_offset))
+            start = self.source.starts[first.lineno - 1]
+            self.edits.append(_Edit(start, start, f"{self.source.indent(first)}{declare}\n"))
         if patchable:
             first = min(patchable, key=lambda s: (s.lineno, s.col_offset))
             removed_first = False
@@ -245,6 +266,7 @@ class _Patcher:
                 outer = self.source.indent(statement)
             text = open_ + "\n" + "".join(f"{inner}{t},\n" for t in texts) + outer
         self.edits.append(_Edit(start, end, text + close))
+        self.kept.append(statement)
 
     def rewrite(self, statement: ast.stmt, founds: list[Found]) -> bool:
         """Rewrite one statement; True when it is removed."""

@@ -241,6 +241,11 @@ class _Scanner:
             )
             self.walk(statement.body, scope, inner)
             self.walk(statement.orelse, scope, context)
+        elif isinstance(statement, ast.If) and is_main_guard(statement):
+            # the script's entry point: it runs whenever the file is run as the node
+            main_scope = replace(scope, local={**scope.local, **_locals(statement)})
+            self.walk(statement.body, main_scope, context)
+            self.walk(statement.orelse, scope, context)
         elif isinstance(statement, ast.If):
             inner = _replace(
                 context,
@@ -538,7 +543,19 @@ def _calls(node: ast.AST, nested: str | None) -> Iterator[tuple[ast.Call, str | 
             yield child, inner
 
 
-def _locals(function: ast.FunctionDef | ast.AsyncFunctionDef) -> dict[str, list[ast.stmt]]:
+def is_main_guard(statement: ast.If) -> bool:
+    """``if __name__ == "__main__":``."""
+    test = statement.test
+    return (
+        isinstance(test, ast.Compare)
+        and len(test.ops) == 1
+        and isinstance(test.ops[0], ast.Eq)
+        and {ast.dump(test.left), ast.dump(test.comparators[0])}
+        == {ast.dump(ast.Name("__name__", ast.Load())), ast.dump(ast.Constant("__main__"))}
+    )
+
+
+def _locals(function: ast.AST) -> dict[str, list[ast.stmt]]:
     """Assignments to the function's variables (``x = ...``), and to attributes of them
     (``descriptor.read_only = ...`` under the keys ``descriptor.*`` and
     ``descriptor.read_only``, ``self.rate = ...`` under ``self.rate``), in source order."""
