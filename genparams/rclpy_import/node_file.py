@@ -1,4 +1,5 @@
-"""One node file -> the unit to import and its schema: parsing, picking the class, naming."""
+"""One node file -> the unit to import and its schema: parsing, reading its package,
+picking the class, naming."""
 
 from __future__ import annotations
 
@@ -9,14 +10,17 @@ from pathlib import Path
 from genparams.errors import GenparamsError
 from genparams.rclpy_import.convert import Imported, convert, schema_name
 from genparams.rclpy_import.features import AUTOMATIC, what_it_needs
-from genparams.rclpy_import.scan import Unit, units
+from genparams.rclpy_import.found import SourceFile, Unit
+from genparams.rclpy_import.package import Package
+from genparams.rclpy_import.resolve import Resolver
+from genparams.rclpy_import.scan import units
 
 
 class NodeFileError(GenparamsError):
     """The file cannot be imported at all (message: FILE:LINE:COL: what)."""
 
 
-@dataclass
+@dataclass(frozen=True)
 class ImportedNode:
     source: str  # the file's text
     tree: ast.Module
@@ -28,43 +32,59 @@ class ImportedNode:
         return self.unit.name
 
 
-def import_node(source: str, file: str, class_name: str | None = None) -> ImportedNode:
+def parse(source: str, file: str) -> ast.Module:
     try:
-        tree = ast.parse(source, filename=file)
+        return ast.parse(source, filename=file)
     except SyntaxError as exc:
         line, column = exc.lineno or 1, exc.offset or 1
         raise NodeFileError(f"{file}:{line}:{column}: cannot parse as Python: {exc.msg}") from None
     except (ValueError, RecursionError, MemoryError) as exc:  # NUL bytes, nesting
         why = str(exc) or "nested too deeply"
         raise NodeFileError(f"{file}:1:1: cannot parse as Python: {why}") from None
+
+
+def import_node(
+    source: str,
+    file: str,
+    class_name: str | None = None,
+    overrides: dict[str, object] | None = None,
+) -> ImportedNode:
+    """Scan, resolve and convert the node in ``file`` (its text ``source``): the unit
+    chosen and its schema. ``overrides`` are the node's parameters from params files."""
+    tree = parse(source, file)
+    path = Path(file)
+    resolver = Resolver(Package.of(path))
     try:
-        found = units(tree)
+        view = resolver.node_view(path, tree, SourceFile(file, tuple(source.splitlines())))
+        found = units(view, resolver)
     except RecursionError:
         raise NodeFileError(f"{file}:1:1: nested too deeply to read") from None
+    unit = _chosen(found, file, class_name)
+    automatic = any(o.option == AUTOMATIC for o in unit.options)
+    if not unit.found and not (automatic and (unit.reads or overrides)):
+        first = unit.options[0] if unit.options else None
+        where = f"{first.where.line}:{first.where.column}" if first else "1:1"
+        why = f": {what_it_needs(first)}" if first else ""
+        raise NodeFileError(f"{file}:{where}: no parameter declaration found{why}")
+    name = schema_name(unit.name, path.stem)
+    return ImportedNode(source, tree, unit, convert(unit, name, overrides or {}))
+
+
+def _chosen(found: list[Unit], file: str, class_name: str | None) -> Unit:
     classes = [u.name for u in found if u.name]
     if class_name is not None:
         chosen = [u for u in found if u.name == class_name]
         if not chosen:
             which = f"classes that do: {', '.join(classes)}" if classes else "none does"
             raise NodeFileError(f"{file}:1:1: no class {class_name} declaring parameters ({which})")
-        unit = chosen[0]
-    elif not found:
+        return chosen[0]
+    if not found:
         raise NodeFileError(
             f"{file}:1:1: no parameter declaration (declare_parameter or declare_parameters) found"
         )
-    elif len(found) > 1:
+    if len(found) > 1:
         names = ", ".join(u.name or "the module's functions" for u in found)
         raise NodeFileError(
             f"{file}:1:1: several parts declare parameters ({names}): pick a class with --class"
         )
-    else:
-        unit = found[0]
-    automatic = any(o.option == AUTOMATIC for o in unit.options)
-    if not unit.found and not (automatic and unit.reads):
-        first = unit.options[0] if unit.options else None
-        where = f"{first.at.lineno}:{first.at.col_offset + 1}" if first else "1:1"  # type: ignore[attr-defined]
-        why = f": {what_it_needs(first)}" if first else ""
-        raise NodeFileError(f"{file}:{where}: no parameter declaration found{why}")
-    name = schema_name(unit.name, Path(file).stem)
-    imported = convert(unit, file, source.splitlines(), name)
-    return ImportedNode(source, tree, unit, imported)
+    return found[0]

@@ -21,7 +21,7 @@ from genparams.outputs.schema_yaml import schema_yaml
 from genparams.rclpy_import.convert import APPROXIMATE, EXACT, LEFT_OUT
 from genparams.rclpy_import.node_file import ImportedNode, import_node
 from genparams.rclpy_import.patch import patched_source
-from genparams.rclpy_import.scan import Found
+from genparams.rclpy_import.found import Found
 from genparams.runtime.core.naming import NODE_PARAMETERS, class_name, module_name
 from tests.rclpy_import.cases import CASES, CLASSES, GOLDEN, NODES, Case
 from tests.support import RosHarness, import_file, load_generated
@@ -121,14 +121,14 @@ FROM_ITEM = {"sensor_hub": ["sensors.front.frame_id", "sensors.rear.frame_id"]}
 
 def _outcome(result: ImportedNode, name: str) -> str:
     found = _found(result, name)
-    return next(o for f, o in result.imported.outcome if f is found)
+    return next(o.fate for o in result.imported.outcome if o.found is found)
 
 
 def _found(result: ImportedNode, name: str) -> Found:
     """The declaration of ``name``: by its own name, as an item of a per-item parameter
     (``offsets`` holds ``offsets.shoulder``, ``*`` the top level's), or as a parameter of
     a mapped group's entry (``gains.*.p`` holds ``gains.shoulder.p``)."""
-    keys = {key: f for f, _ in result.imported.outcome if (key := result.imported.keys.get(id(f)))}
+    keys = {o.key: o.found for o in result.imported.outcome if o.key}
     if name in keys:
         return keys[name]
     parts = name.split(".")
@@ -141,7 +141,7 @@ def _found(result: ImportedNode, name: str) -> Found:
 
 
 def test_every_case_is_counted() -> None:
-    counts = {c.name: [o for _, o in imported(c).imported.outcome] for c in CASES}
+    counts = {c.name: [o.fate for o in imported(c).imported.outcome] for c in CASES}
     tallies = {n: (o.count(EXACT), o.count(APPROXIMATE), o.count(LEFT_OUT)) for n, o in
                counts.items()}  # fmt: skip
     assert tallies == {
