@@ -19,9 +19,9 @@ from rclpy.node import Node
 import genparams
 from genparams.outputs.schema_yaml import schema_yaml
 from genparams.rclpy_import.convert import APPROXIMATE, EXACT, LEFT_OUT
+from genparams.rclpy_import.found import Found
 from genparams.rclpy_import.node_file import ImportedNode, import_node
 from genparams.rclpy_import.patch import patched_source
-from genparams.rclpy_import.found import Found
 from genparams.runtime.core.naming import NODE_PARAMETERS, class_name, module_name
 from tests.rclpy_import.cases import CASES, CLASSES, GOLDEN, NODES, Case
 from tests.support import RosHarness, import_file, load_generated
