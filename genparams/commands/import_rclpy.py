@@ -1,18 +1,21 @@
-"""genparams import-rclpy FILE.py [--class NAME] [-o SCHEMA] [--patch]"""
+"""genparams import-rclpy FILE.py [--class NAME] [--params-file FILE]... [-o SCHEMA] [--patch]"""
 
 from __future__ import annotations
 
 import argparse
 import sys
 from pathlib import Path
+from typing import Any
 
 from genparams.api import load_schema
 from genparams.commands._common import report
 from genparams.errors import CommandError
 from genparams.integration.writing import write_all
 from genparams.outputs.schema_yaml import schema_yaml
+from genparams.paramsfile.node_sections import sections_for
+from genparams.paramsfile.params_reader import read_params_file
 from genparams.rclpy_import.convert import APPROXIMATE, LEFT_OUT, Imported
-from genparams.rclpy_import.node_file import NodeFileError, import_node
+from genparams.rclpy_import.node_file import NodeFileError, import_node, node_name, scanned
 from genparams.rclpy_import.patch import patch_diff, unchanged_reason
 from genparams.schema.errors import SchemaError
 from genparams.schema.loader import MAX_BYTES
@@ -29,6 +32,16 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
         dest="class_name",
         metavar="NAME",
         help="the node class to import, when the file holds several",
+    )
+    parser.add_argument(
+        "--params-file",
+        dest="params_files",
+        action="append",
+        default=[],
+        type=Path,
+        metavar="FILE",
+        help="a params file the node is launched with (repeatable): a node declaring what "
+        "its overrides name takes its parameters from the node's section",
     )
     parser.add_argument(
         "-o", "--output", type=Path, metavar="SCHEMA", help="default: stdout (without --patch)"
@@ -50,7 +63,9 @@ def run(args: argparse.Namespace) -> int:
     except (OSError, UnicodeDecodeError) as exc:
         raise CommandError(f"{file}:1:1: cannot read: {exc}") from None
     try:
-        node = import_node(text, file, args.class_name)
+        _, unit = scanned(text, file, args.class_name)
+        overrides, given_by = _overrides(args.params_files, node_name(unit))
+        node = import_node(text, file, args.class_name, overrides, given_by)
     except NodeFileError as exc:
         raise CommandError(exc) from None
     imported = node.imported
@@ -80,6 +95,24 @@ def run(args: argparse.Namespace) -> int:
             report(f"the patch changes nothing: {unchanged_reason(node)}")
         sys.stdout.write(diff)
     return 1 if imported.warnings else 0
+
+
+def _overrides(files: list[Path], node: str | None) -> tuple[dict[str, Any], str]:
+    """The parameters ``files`` give the node named ``node`` (later files win), and the
+    files' names; without a node name, only sections for every node (``/**``) apply."""
+    documents = []
+    for path in files:
+        try:
+            text = path.read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError) as exc:
+            raise CommandError(f"{path}:1:1: cannot read: {exc}") from None
+        document = read_params_file(text, str(path))
+        if document.problems:
+            raise CommandError(SchemaError(list(document.problems)))
+        documents.append(document.sections)
+    applied, _ = sections_for(documents, f"/{node}" if node else "/_")
+    values = {e.name: e.value for section in applied for e in section.entries}
+    return values, ", ".join(str(p) for p in files)
 
 
 def _header(source: str, unit_name: str) -> str:

@@ -17,12 +17,14 @@ from __future__ import annotations
 
 import ast
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
 from genparams.rclpy_import.features import AUTOMATIC, kept_by_the_node, what_it_needs
 from genparams.rclpy_import.found import Found, Unit
-from genparams.rclpy_import.leaves import DescriptorCopy, condition_value, typed_leaf
+from genparams.rclpy_import.from_file import entry_values, file_type, undeclared
+from genparams.rclpy_import.leaves import DescriptorCopy, condition_value, default_of, typed_leaf
 from genparams.rclpy_import.placing import (
     FOR_EACH,
     ItemPlace,
@@ -49,7 +51,7 @@ class Outcome:
     for_each leaf, ``offsets`` or ``*``; a mapped group's parameter's its place,
     ``gains.*.p``)."""
 
-    found: Found
+    found: Found | None  # None: a parameter of the params file the node declares as given
     fate: str
     key: str | None = None
 
@@ -84,14 +86,21 @@ def schema_name(unit_name: str, file_stem: str) -> str:
     return name if SCHEMA_NAME.fullmatch(name) else f"node_{name}".rstrip("_")
 
 
-def convert(unit: Unit, name: str, overrides: dict[str, Any] | None = None) -> Imported:
-    return _Converter(unit, name).run()
+def convert(
+    unit: Unit, name: str, overrides: Mapping[str, Any] | None = None, given_by: str = ""
+) -> Imported:
+    """The schema of ``unit``; ``overrides`` are the parameters its params files give it
+    (``given_by`` names them for notes)."""
+    return _Converter(unit, name, overrides or {}, given_by).run()
 
 
 class _Converter:
-    def __init__(self, unit: Unit, name: str) -> None:
+    def __init__(self, unit: Unit, name: str, overrides: Mapping[str, Any], given_by: str) -> None:
         self.unit = unit
         self.name = name
+        self.overrides = overrides
+        self.given_by = given_by
+        self.from_file: list[str] = []  # parameters only the params file names
         self.schema = SchemaTree()
         self.fates: list[tuple[Found, str]] = []
         self.keys: dict[Found, str] = {}
@@ -108,6 +117,10 @@ class _Converter:
             self.fates.append((read, self.declaration(read)))
         every_read = bool(reads) and all(o != LEFT_OUT for _, o in self.fates[-len(reads) :])
         used = [*self.unit.found, *reads]
+        if automatic and self.overrides:
+            prefixes = {f.loop_prefix for f in used if f.loop_prefix is not None}
+            self.take_from_file(prefixes)
+            every_read = every_read or not reads
         read_by_loops = [f.loop_source for f in used if f.loop_source is not None]
         for option in self.unit.options:
             if any(option.at is source for source in read_by_loops):
@@ -120,7 +133,7 @@ class _Converter:
             self.warn(change.where, "", f"{change.construct}: the schema keeps the declared one")
         if self.unit.files:
             self.note(
-                Location(self.unit.files[0], 1, 1), "",
+                Location(self.unit.file, 1, 1), "",
                 f"read {len(self.unit.files)} other file(s) of the node's package, never run: "
                 + ", ".join(self.unit.files),
             )  # fmt: skip
@@ -129,9 +142,33 @@ class _Converter:
             data["description"] = " ".join(self.unit.docstring.strip().split("\n\n")[0].split())
         data["parameters"] = self.schema.tree
         outcome = tuple(Outcome(f, o, self.keys.get(f)) for f, o in self.fates)
+        outcome += tuple(Outcome(None, EXACT, n) for n in self.from_file)
         return Imported(
             self.name, data, tuple(self.warnings), tuple(self.notes), outcome, every_read
         )
+
+    def take_from_file(self, open_prefixes: set[str]) -> None:
+        """The params file's parameters no declaration or read names: the node declares
+        them as the file gives them (automatically_declare_parameters_from_overrides)."""
+        where = next(o.where for o in self.unit.options if o.option == AUTOMATIC)
+        placed = set(self.schema.first) | set(self.from_file)
+        for name, leaf, reason in undeclared(self.overrides, placed, open_prefixes):
+            problem = reason if leaf is None else self.schema.name_problem(name)
+            if leaf is None or problem is not None:
+                self.warn(where, name, f"given by the params file: {problem}: left out")
+                continue
+            self.schema.place(name, leaf)
+            self.from_file.append(name)
+        if self.from_file:
+            self.note(where, "", f"{len(self.from_file)} parameter(s) the node declares from "
+                      f"the params file {self.given_by}: type and default as the file gives "
+                      "them")  # fmt: skip
+
+    def from_params_file(self, found: Found, name: str, place: ItemPlace | None) -> list[Any]:
+        """The values the params file gives what ``found`` reads."""
+        if place is not None:
+            return entry_values(self.overrides, place) if place.tail else []
+        return [self.overrides[name]] if name in self.overrides else []
 
     def declared(self, read: Found) -> bool:
         """Whether a read is of a parameter the schema holds already."""
@@ -260,7 +297,13 @@ class _Converter:
                       "one schema default serves every entry: imported with none, so each "
                       "entry must be given a value")  # fmt: skip
             exact = False
-        if found.read == "":
+        given = self.from_params_file(found, name, place) if found.read is not None else []
+        kind = file_type(given)
+        if kind is not None and leaf["type"] in ("any", kind):
+            leaf["type"] = schema_type = kind
+            if place is None:
+                leaf["default"] = default_of(given[0])
+        elif found.read == "":
             self.warn(at, shown, "read with .value, the params file deciding its type: imported "
                       "as type: any (state its type in the schema)")  # fmt: skip
             exact = False

@@ -33,6 +33,7 @@ class Context:
     loop_source: ast.AST | None = None
     via: str | None = None  # the helper, base class or object declaring for the node
     call_site: Location | None = None  # where a helper declaring for the node is called
+    reads: tuple[str, ...] = ()  # parameters the helper's arguments were computed from
 
     def changed(self, **changes: Any) -> Context:
         return replace(self, **changes)
@@ -140,6 +141,11 @@ def _found(
         via=context.via,
         **more,
     )
+    if context.reads and found.value.problem is None:
+        value = replace(
+            found.value, reads=tuple(dict.fromkeys([*found.value.reads, *context.reads]))
+        )
+        found = replace(found, value=value)
     return replace(found, item_value=_item_value(found, scope))
 
 

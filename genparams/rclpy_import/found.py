@@ -118,6 +118,7 @@ class Unit:
     afterwards: tuple[NodeOption, ...] = ()  # see scan.AFTERWARDS
     reads: tuple[Found, ...] = ()  # self.get_parameter(name) calls
     files: tuple[str, ...] = ()  # every other file of the package the scan read
+    file: str = ""  # the node file, as given
 
 
 def descriptor_of(found: Found) -> DescriptorValue | None:

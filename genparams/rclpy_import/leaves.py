@@ -88,7 +88,7 @@ class DescriptorCopy:
         return exact
 
 
-def _schema_type(value: Any) -> tuple[str | None, str]:
+def schema_type(value: Any) -> tuple[str | None, str]:
     """The type rclpy gives a declaration of this value (Parameter.Type.from_parameter_value)."""
     if value is None:
         return None, "a None value: rclpy refuses to declare it without dynamic typing"
@@ -136,16 +136,16 @@ def typed_leaf(found: Found) -> tuple[dict[str, Any] | None, str]:
     if dynamic or (value is None and by_name_only):
         if value is None:  # declared by name only, or with dynamic_typing and no value
             return {"type": "any", "optional": True}, ""
-        schema_type, problem = _schema_type(value)
-        if schema_type is None:
+        kind, problem = schema_type(value)
+        if kind is None:
             return None, problem
-        if schema_type == "byte_array":
+        if kind == "byte_array":
             return None, "an empty list as a dynamically typed value: a schema cannot default to it"
         return {"type": "any", "default": default_of(value)}, ""
-    schema_type, problem = _schema_type(value)
-    if schema_type is None:
+    kind, problem = schema_type(value)
+    if kind is None:
         return None, problem
-    return {"type": schema_type, "default": default_of(value)}, ""
+    return {"type": kind, "default": default_of(value)}, ""
 
 
 def condition_value(kind: str, value: Any) -> Any:
@@ -161,8 +161,10 @@ def condition_value(kind: str, value: Any) -> Any:
 
 
 def default_of(value: Any) -> Any:
-    if isinstance(value, tuple):
-        return list(value)
+    if isinstance(value, (list, tuple)):
+        return [default_of(v) for v in value]
+    if isinstance(value, str):
+        return str(value)  # a SharePath is written as its text
     if isinstance(value, float) and math.isnan(value):
         return float("nan")
     return value

@@ -4,8 +4,10 @@ picking the class, naming."""
 from __future__ import annotations
 
 import ast
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 from genparams.errors import GenparamsError
 from genparams.rclpy_import.convert import Imported, convert, schema_name
@@ -43,14 +45,8 @@ def parse(source: str, file: str) -> ast.Module:
         raise NodeFileError(f"{file}:1:1: cannot parse as Python: {why}") from None
 
 
-def import_node(
-    source: str,
-    file: str,
-    class_name: str | None = None,
-    overrides: dict[str, object] | None = None,
-) -> ImportedNode:
-    """Scan, resolve and convert the node in ``file`` (its text ``source``): the unit
-    chosen and its schema. ``overrides`` are the node's parameters from params files."""
+def scanned(source: str, file: str, class_name: str | None = None) -> tuple[ast.Module, Unit]:
+    """The node's syntax tree and the unit chosen (read with its package)."""
     tree = parse(source, file)
     path = Path(file)
     resolver = Resolver(Package.of(path))
@@ -59,15 +55,51 @@ def import_node(
         found = units(view, resolver)
     except RecursionError:
         raise NodeFileError(f"{file}:1:1: nested too deeply to read") from None
-    unit = _chosen(found, file, class_name)
+    return tree, _chosen(found, file, class_name)
+
+
+def import_node(
+    source: str,
+    file: str,
+    class_name: str | None = None,
+    overrides: Mapping[str, Any] | None = None,
+    given_by: str = "",
+) -> ImportedNode:
+    """Scan, resolve and convert the node in ``file`` (its text ``source``): the unit
+    chosen and its schema. ``overrides`` are the node's parameters from its params files
+    (``given_by`` names them)."""
+    tree, unit = scanned(source, file, class_name)
     automatic = any(o.option == AUTOMATIC for o in unit.options)
     if not unit.found and not (automatic and (unit.reads or overrides)):
         first = unit.options[0] if unit.options else None
         where = f"{first.where.line}:{first.where.column}" if first else "1:1"
         why = f": {what_it_needs(first)}" if first else ""
         raise NodeFileError(f"{file}:{where}: no parameter declaration found{why}")
-    name = schema_name(unit.name, path.stem)
-    return ImportedNode(source, tree, unit, convert(unit, name, overrides or {}))
+    name = schema_name(unit.name, Path(file).stem)
+    return ImportedNode(source, tree, unit, convert(unit, name, overrides, given_by))
+
+
+def node_name(unit: Unit) -> str | None:
+    """The name the node gives itself: ``super().__init__("camera")``, ``Node("camera")``
+    or ``node_name="camera"``; None when it is not a literal."""
+    for node in ast.walk(unit.node):
+        if not isinstance(node, ast.Call):
+            continue
+        func = node.func
+        called = func.attr if isinstance(func, ast.Attribute) else getattr(func, "id", "")
+        super_init = (
+            called == "__init__"
+            and isinstance(func, ast.Attribute)
+            and isinstance(func.value, ast.Call)
+            and getattr(func.value.func, "id", "") == "super"
+        )
+        if not (super_init or called == "Node"):
+            continue
+        written = [k.value for k in node.keywords if k.arg == "node_name"] + node.args[:1]
+        for value in written:
+            if isinstance(value, ast.Constant) and isinstance(value.value, str):
+                return value.value
+    return None
 
 
 def _chosen(found: list[Unit], file: str, class_name: str | None) -> Unit:

@@ -97,6 +97,12 @@ class Package:
             return None
         return _file(package_file.parent, [name])
 
+    def shown(self, path: Path) -> str:
+        """A file read, as a note names it: from the package's root."""
+        if self.root is not None and path.is_relative_to(self.root):
+            return str(path.relative_to(self.root))
+        return str(path)
+
     def _ancestors(self, importer: Path) -> list[Path]:
         out = []
         for folder in importer.resolve().parents:

@@ -63,7 +63,14 @@ def unchanged_reason(node: ImportedNode) -> str:
             "the module's functions declare the parameters: only declarations on self in "
             "a class are rewritten"
         )
-    declared = [o.found for o in node.imported.outcome if o.found.read is None]
+    elsewhere = _declared_elsewhere(node)
+    if elsewhere is not None:
+        return (
+            f"{elsewhere} declares imported parameters, which the generated class would "
+            "declare again: the node is left as written (move those declarations to the "
+            "schema by hand)"
+        )
+    declared = [o.found for o in node.imported.outcome if o.found and o.found.read is None]
     if declared and not any(f.receiver_is_self for f in declared):
         return "only declarations on self in a class are rewritten"
     return (
@@ -72,8 +79,16 @@ def unchanged_reason(node: ImportedNode) -> str:
     )
 
 
+def _declared_elsewhere(node: ImportedNode) -> str | None:
+    """A helper, base class or object of the package declaring an imported parameter."""
+    for each in node.imported.outcome:
+        if each.found is not None and each.found.via is not None and each.fate != LEFT_OUT:
+            return each.found.via
+    return None
+
+
 def patched_source(node: ImportedNode, file: str) -> str:
-    if not isinstance(node.unit.node, ast.ClassDef):
+    if not isinstance(node.unit.node, ast.ClassDef) or _declared_elsewhere(node) is not None:
         return node.source  # declarations on other receivers: left to the author
     return _Patcher(node, node.unit.node, file).run()
 
@@ -166,11 +181,12 @@ class _Patcher:
         with its declarations; only when every declaration they make was imported."""
         outcomes: dict[ast.stmt, list[str]] = {}
         for each in self.node.imported.outcome:
-            outcomes.setdefault(each.found.statement, []).append(each.fate)
+            if each.found is not None:
+                outcomes.setdefault(each.found.statement, []).append(each.fate)
         groups: dict[ast.stmt, list[tuple[Found, str]]] = {}
         for each in self.node.imported.outcome:
             found, outcome = each.found, each.fate
-            if found.via is not None:
+            if found is None or found.via is not None:
                 continue  # declared outside the node's own statements: left as written
             if found.read is not None:
                 continue  # a read stays: genparams declared the parameter it reads

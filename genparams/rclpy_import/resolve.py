@@ -10,7 +10,7 @@ where it was written.
 from __future__ import annotations
 
 import ast
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from genparams.rclpy_import.found import SourceFile
@@ -54,8 +54,10 @@ class ModuleView:
 
     def class_constants(self, cls: ast.ClassDef) -> dict[str, Binding]:
         """A class's attributes (``RATE = 10.0`` in its body), read in this module."""
-        scope = self.scope()
-        return {n: Elsewhere(e, scope) for n, e in constants(cls.body).items()}
+        own = constants(cls.body)
+        scope = self.scope()  # an attribute may use those assigned before it in the class
+        scope = replace(scope, module_constants={**scope.module_constants, **own})
+        return {n: Elsewhere(e, scope) for n, e in own.items()}
 
 
 class Resolver:

@@ -125,10 +125,12 @@ class _Scanner:
 
     def unit(self, name: str, node: ast.ClassDef | ast.Module) -> Unit:
         c = self.collected
-        files = tuple(str(p) for p in self.resolver.package.read)
+        package = self.resolver.package
+        files = tuple(package.shown(p) for p in package.read)
+        file = self.view.source.name if self.view is not None else ""
         return Unit(
             name, node, ast.get_docstring(node), tuple(c.found), tuple(c.options),
-            tuple(c.afterwards), tuple(c.reads), files,
+            tuple(c.afterwards), tuple(c.reads), files, file,
         )  # fmt: skip
 
     def scan_module(self, view: ModuleView, own: list[ast.stmt]) -> Unit:
@@ -148,7 +150,14 @@ class _Scanner:
         self.object_methods(cls, None)
         return self.unit(cls.definition.name, cls.definition)
 
-    def object_methods(self, cls: ClassFound, via: str | None, site: Any = None) -> None:
+    def object_methods(
+        self,
+        cls: ClassFound,
+        via: str | None,
+        site: Any = None,
+        built: ast.Call | None = None,
+        caller: Scope | None = None,
+    ) -> None:
         """Scan the methods of ``cls`` and of its base classes in the package (farthest
         first; a method overridden is read where ``super()`` reaches it)."""
         chain = self.resolver.chain(cls)
@@ -168,7 +177,10 @@ class _Scanner:
                 if depth > 0 and via is None:
                     inner_via = f"the base class {current.definition.name}"
                 context = Context(current.module.source, via=inner_via, call_site=site)
-                self.function(statement, scope, context)
+                bound: dict[str, Any] = {}
+                if statement.name == "__init__" and built is not None and caller is not None:
+                    bound = self.bound_arguments(statement, built, caller, scope)
+                self.function(statement, scope, context, bound)
 
     def class_scope(self, chain: list[ClassFound]) -> Scope:
         """Names in a class's methods: its module's, and its (and its bases') attributes
@@ -190,11 +202,18 @@ class _Scanner:
         )
 
     def function(
-        self, function: ast.FunctionDef | ast.AsyncFunctionDef, scope: Scope, context: Context
+        self,
+        function: ast.FunctionDef | ast.AsyncFunctionDef,
+        scope: Scope,
+        context: Context,
+        bound: dict[str, Any] | None = None,
     ) -> None:
         nested = {s.name: s for s in function.body if isinstance(s, ast.FunctionDef)}
         inner = replace(
-            scope, loop={}, local=locals_of(function), functions={**scope.functions, **nested}
+            scope,
+            loop=bound or {},
+            local=locals_of(function),
+            functions={**scope.functions, **nested},
         )
         self.walk(function.body, inner, context)
 
@@ -219,6 +238,8 @@ class _Scanner:
             main_scope = replace(scope, local={**scope.local, **locals_of(statement)})
             self.walk(statement.body, main_scope, context)
             self.walk(statement.orelse, scope, context)
+        elif isinstance(statement, ast.If) and _guards_redeclaring(statement):
+            self.walk(statement.body, scope, context)  # declares once, whatever the test
         elif isinstance(statement, ast.If):
             inner = context.changed(
                 condition=context.condition or f"if {unparsed(statement.test)}",
@@ -371,7 +392,7 @@ class _Scanner:
         self.stack.append(cls.definition)
         try:
             via = context.via or f"the object {cls.definition.name}(self)"
-            self.object_methods(cls, via, site)
+            self.object_methods(cls, via, site, call, scope)
         finally:
             self.stack.pop()
 
@@ -384,24 +405,10 @@ class _Scanner:
         context: Context,
     ) -> None:
         """Read ``helper``'s body with its arguments bound to the call's values."""
-        names = [a.arg for a in helper.args.args]
-        given = list(call.args)
-        if isinstance(call.func, ast.Attribute) and names and names[0] == "self":
-            names = names[1:]
-        bound: dict[str, Any] = {}
-        defaults = helper.args.defaults
-        for name, default in zip(names[len(names) - len(defaults) :], defaults, strict=False):
-            try:
-                bound[name] = Evaluator(scope).value(default)
-            except UntranslatableError:
-                pass
-        arguments = list(zip(names, given, strict=False))
-        arguments += [(k.arg, k.value) for k in call.keywords if k.arg is not None]
-        for name, argument in arguments:
-            try:
-                bound[name] = Evaluator(caller).value(argument)
-            except UntranslatableError:
-                bound.pop(name, None)
+        reads: list[str] = []
+        bound = self.bound_arguments(helper, call, caller, scope, reads)
+        if reads:
+            context = context.changed(reads=tuple(dict.fromkeys([*context.reads, *reads])))
         inner = replace(scope, loop={}, local=locals_of(helper))
         inner = inner.with_loop(bound)
         self.stack.append(helper)
@@ -409,6 +416,43 @@ class _Scanner:
             self.walk(helper.body, inner, context.changed(condition=context.condition))
         finally:
             self.stack.pop()
+
+    def bound_arguments(
+        self,
+        function: ast.FunctionDef | ast.AsyncFunctionDef,
+        call: ast.Call,
+        caller: Scope,
+        scope: Scope,
+        reads: list[str] | None = None,
+    ) -> dict[str, Any]:
+        """The values ``call`` gives ``function``'s arguments (or their defaults), as far
+        as they can be read; a method's or constructor's ``self`` takes none."""
+        names = [a.arg for a in function.args.args]
+        if (
+            names
+            and names[0] == "self"
+            and (isinstance(call.func, ast.Attribute) or function.name == "__init__")
+        ):
+            names = names[1:]
+        bound: dict[str, Any] = {}
+        defaults = function.args.defaults
+        for name, default in zip(names[len(names) - len(defaults) :], defaults, strict=False):
+            try:
+                bound[name] = Evaluator(scope).value(default)
+            except UntranslatableError:
+                pass
+        arguments: list[tuple[str, ast.expr]] = list(zip(names, call.args, strict=False))
+        arguments += [(k.arg, k.value) for k in call.keywords if k.arg is not None]
+        known = replace(caller, parameters=dict(self.collected.defaults))
+        for name, argument in arguments:
+            evaluator = Evaluator(known)
+            try:
+                bound[name] = evaluator.value(argument)
+            except UntranslatableError:
+                bound.pop(name, None)
+            if reads is not None:
+                reads.extend(evaluator.parameters_read)
+        return bound
 
     def reads_of_overrides(self, root: ast.AST, context: Context, calls: bool = True) -> None:
         """``self._parameter_overrides`` (and, with ``calls``, by-prefix calls) under
@@ -466,3 +510,16 @@ def _super_called(classes: list[ClassFound], name: str) -> bool:
             ):
                 return True
     return False
+
+
+def _guards_redeclaring(statement: ast.If) -> bool:
+    """``if not self.has_parameter(name):`` with no else: it declares once, as a schema does."""
+    test = statement.test
+    return (
+        not statement.orelse
+        and isinstance(test, ast.UnaryOp)
+        and isinstance(test.op, ast.Not)
+        and isinstance(test.operand, ast.Call)
+        and isinstance(test.operand.func, ast.Attribute)
+        and test.operand.func.attr == "has_parameter"
+    )
