@@ -128,7 +128,7 @@ def _found(result: ImportedNode, name: str) -> Found:
     """The declaration of ``name``: by its own name, as an item of a per-item parameter
     (``offsets`` holds ``offsets.shoulder``, ``*`` the top level's), or as a parameter of
     a mapped group's entry (``gains.*.p`` holds ``gains.shoulder.p``)."""
-    keys = {o.key: o.found for o in result.imported.outcome if o.key}
+    keys = {o.key: o.found for o in result.imported.outcome if o.key and o.found}
     if name in keys:
         return keys[name]
     parts = name.split(".")
