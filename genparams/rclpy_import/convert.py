@@ -21,7 +21,12 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from genparams.rclpy_import.features import AUTOMATIC, kept_by_the_node, what_it_needs
+from genparams.rclpy_import.features import (
+    ALLOW_UNDECLARED,
+    AUTOMATIC,
+    kept_by_the_node,
+    what_it_needs,
+)
 from genparams.rclpy_import.found import Found, Unit
 from genparams.rclpy_import.from_file import entry_values, file_type, undeclared
 from genparams.rclpy_import.leaves import DescriptorCopy, condition_value, default_of, typed_leaf
@@ -125,7 +130,11 @@ class _Converter:
         for option in self.unit.options:
             if any(option.at is source for source in read_by_loops):
                 continue  # the keys of an open group: its declarations say the rest
-            if kept_by_the_node(option, every_read):
+            if self.from_file and option.option != ALLOW_UNDECLARED:
+                self.note(option.where, "", f"{option.construct}: the schema holds what the "
+                          f"params file gives the node ({self.given_by}); a name another "
+                          "file brings is not declared")  # fmt: skip
+            elif kept_by_the_node(option, every_read):
                 self.note(option.where, "", what_it_needs(option, every_read))
             else:
                 self.warn(option.where, "", what_it_needs(option))
@@ -160,9 +169,9 @@ class _Converter:
             self.schema.place(name, leaf)
             self.from_file.append(name)
         if self.from_file:
-            self.note(where, "", f"{len(self.from_file)} parameter(s) the node declares from "
-                      f"the params file {self.given_by}: type and default as the file gives "
-                      "them")  # fmt: skip
+            self.note(where, "", f"{len(self.from_file)} parameter(s) the node declares as "
+                      f"the params file {self.given_by} gives them, with that type and "
+                      "default")  # fmt: skip
 
     def from_params_file(self, found: Found, name: str, place: ItemPlace | None) -> list[Any]:
         """The values the params file gives what ``found`` reads."""

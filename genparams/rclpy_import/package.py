@@ -67,7 +67,7 @@ class Package:
             self.skipped.append(f"{path}: {type(exc).__name__}")
             return None
         self.read.append(path)
-        found = ModuleFile(path, tree, SourceFile(str(path), tuple(text.splitlines())))
+        found = ModuleFile(path, tree, SourceFile(_named(path), tuple(text.splitlines())))
         self._modules[path] = found
         return found
 
@@ -113,6 +113,11 @@ class Package:
 
     def _inside(self, path: Path) -> bool:
         return self.root is not None and path.resolve().is_relative_to(self.root)
+
+
+def _named(path: Path) -> str:
+    """A file as messages name it: from the working folder when it is below it."""
+    return str(path.relative_to(Path.cwd())) if path.is_relative_to(Path.cwd()) else str(path)
 
 
 def _file(base: Path, parts: list[str]) -> Path | None:
