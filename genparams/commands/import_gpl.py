@@ -3,17 +3,13 @@
 from __future__ import annotations
 
 import argparse
-import sys
 from pathlib import Path
 
-from genparams.api import load_schema
-from genparams.commands._common import report
+from genparams.commands._importing import finish, read_source
 from genparams.errors import CommandError
-from genparams.gpl.convert import GplError, Imported, import_gpl
+from genparams.gpl.convert import GplError, GplImported, import_gpl
 from genparams.gpl.emit import schema_text, stub_text
-from genparams.integration.writing import write_all
 from genparams.schema.errors import SchemaError
-from genparams.schema.input_file import read_input_file
 from genparams.schema.loader import load_yaml
 
 
@@ -49,53 +45,29 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 
 def run(args: argparse.Namespace) -> int:
     file = str(args.gpl_file)
+    text = read_source(args.gpl_file, "generate_parameter_library file")
     try:
-        document = load_yaml(
-            read_input_file(args.gpl_file, "generate_parameter_library file"), file
-        )
-        imported = import_gpl(document, args.checks_module, args.adopt)
+        imported = import_gpl(load_yaml(text, file), args.checks_module, args.adopt)
     except SchemaError as exc:
         raise CommandError(exc) from None
     except GplError as exc:
         raise CommandError(f"{file}:1:1: {exc}") from None
     module = args.checks_module or f"{imported.name}_checks"
-    if imported.errors:
-        raise CommandError(*map(str, sorted([*imported.errors, *imported.warnings])))
-    text = schema_text(imported, args.gpl_file.name)
-    target = args.output
+    target: Path | None = args.output
     if args.out_dir is not None:
         target = args.out_dir / f"{imported.name}.yaml"
-    try:  # the result must be a schema genparams accepts, or nothing is written
-        # Lines of its errors are lines of the schema text, which is not written.
-        load_schema(f"<schema imported from {args.gpl_file.name}, not written>", text)
-    except SchemaError as exc:
-        raise CommandError(
-            *map(str, sorted(imported.warnings)),
-            exc,
-            f"genparams import-gpl: {file}: the imported schema is not valid",
-        ) from None
-    outputs: dict[Path, str] = {}
-    if target is not None:
-        outputs[target] = text
-        if imported.customs:
-            outputs[target.parent / f"{module.rpartition('.')[2]}.py"] = stub_text(imported, module)
-    _report(imported, module, outputs)
-    if target is None:
-        sys.stdout.write(text)
-    else:
-        write_all(outputs)
-    return 1 if imported.warnings else 0
+    stubs: dict[Path, str] = {}
+    if target is not None and imported.customs:
+        stubs[target.parent / f"{module.rpartition('.')[2]}.py"] = stub_text(imported, module)
+    schema = schema_text(imported, args.gpl_file.name)
+    customs = _customs(imported, module, stubs)
+    return finish("import-gpl", file, imported, schema, target, stubs, customs)
 
 
-def _report(imported: Imported, module: str, outputs: dict[Path, str]) -> None:
-    report(*sorted([*imported.warnings, *imported.notes]))
-    if imported.customs:
-        stub = next((p for p in outputs if p.suffix == ".py"), None)
-        where = f"stubs in {stub}" if stub else "write them in Python"
-        names = ", ".join(sorted(imported.customs))
-        report(f"custom validators to implement in {module} ({where}): {names}")
-    lost = imported.parameters - imported.imported
-    report(
-        f"imported {imported.imported} of {imported.parameters} parameters"
-        + (f"; {lost} left out (see warnings)" if lost else "")
-    )
+def _customs(imported: GplImported, module: str, stubs: dict[Path, str]) -> list[str]:
+    """The report's line on the custom validators to write, if any."""
+    if not imported.customs:
+        return []
+    where = f"stubs in {next(iter(stubs))}" if stubs else "write them in Python"
+    names = ", ".join(sorted(imported.customs))
+    return [f"custom validators to implement in {module} ({where}): {names}"]

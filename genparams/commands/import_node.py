@@ -3,10 +3,8 @@
 from __future__ import annotations
 
 import argparse
-import sys
 from pathlib import Path
 
-from genparams.commands._common import report
 from genparams.errors import CommandError
 from genparams.paramsfile.ros_yaml import absolute, node_name_problem
 
@@ -34,36 +32,17 @@ def run(args: argparse.Namespace) -> int:
     problem = node_name_problem(node)
     if problem is not None:
         raise CommandError(f"genparams import-node: invalid node {args.node!r}: {problem}")
-    from genparams.api import load_schema
+    from genparams.commands._importing import finish
     from genparams.import_node.convert import import_node
     from genparams.import_node.read import read_node
-    from genparams.integration.writing import write_all
-    from genparams.outputs.schema_yaml import schema_yaml
-    from genparams.schema.errors import SchemaError
+    from genparams.importing import schema_text
 
     try:
         imported = import_node(node, read_node(node, args.timeout), args.name)
     except TimeoutError as exc:
         raise CommandError(f"genparams import-node: {exc}") from None
-    header = (
-        f"# genparams schema read from the running node {node} by `genparams import-node`.\n"
-        "# Its values at that moment are the defaults. Edit freely: this file is now the source.\n"
-    )
-    text = header + schema_yaml(imported.data)
-    try:  # the result must be a schema genparams accepts, or nothing is written
-        load_schema(f"<schema read from {node}, not written>", text)
-    except SchemaError as exc:
-        raise CommandError(
-            exc, f"genparams import-node: {node}: the schema read is not valid"
-        ) from None
-    report(*imported.notes, *imported.warnings)
-    lost = imported.parameters - imported.imported
-    report(
-        f"imported {imported.imported} of {imported.parameters} parameters"
-        + (f"; {lost} left out (see warnings)" if lost else "")
-    )
-    if args.output is None:
-        sys.stdout.write(text)
-    else:
-        write_all({args.output: text})
-    return 1 if imported.warnings else 0
+    header = [
+        f"genparams schema read from the running node {node} by `genparams import-node`.",
+        "Its values at that moment are the defaults. Edit freely: this file is now the source.",
+    ]
+    return finish("import-node", node, imported, schema_text(imported, header), args.output)

@@ -9,12 +9,13 @@ FILE:LINE:COL, and is left out of the result, never silently dropped.
 from __future__ import annotations
 
 import re
-from collections.abc import Collection
+from collections.abc import Collection, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
 from genparams.errors import GenparamsError
 from genparams.gpl.validation import Translated, descriptor_range, element_bounds, translate
+from genparams.importing import EXACT, LEFT_OUT, Imported, Outcome, schema_name
 from genparams.runtime.core.types import TYPES, ValueTypeError
 from genparams.runtime.core.validator_kinds import KINDS, ValidatorArgumentError, build_validator
 from genparams.schema.errors import SchemaProblem
@@ -40,27 +41,17 @@ class CustomUse:
     used_by: list[tuple[str, list[Any]]] = field(default_factory=list)  # (parameter, args)
 
 
-@dataclass
-class Imported:
-    name: str
-    data: dict[str, Any]
-    warnings: list[SchemaProblem] = field(default_factory=list)
-    notes: list[SchemaProblem] = field(default_factory=list)  # changes of form, not losses
-    errors: list[SchemaProblem] = field(default_factory=list)  # what GPL itself refuses
-    customs: dict[str, CustomUse] = field(default_factory=dict)
-    parameters: int = 0  # GPL parameters seen
-    imported: int = 0  # of them, present in the result
+@dataclass(frozen=True)
+class GplImported(Imported):
+    """A GPL file's import: errors are what GPL itself refuses; ``customs`` the custom
+    validators to write in Python, by function name."""
 
-
-def schema_name(gpl_key: str) -> str:
-    """GPL's namespace key as a genparams schema name (snake_case, starting with a letter)."""
-    name = re.sub(r"[^a-z0-9_]", "_", re.sub(r"(?<=[a-z0-9])([A-Z])", r"_\1", gpl_key).lower())
-    return name if name[:1].isalpha() else f"gpl_{name}"
+    customs: Mapping[str, CustomUse] = field(default_factory=dict)
 
 
 def import_gpl(
     document: LoadedDocument, checks_module: str | None = None, adopt: Collection[str] = ()
-) -> Imported:
+) -> GplImported:
     """Convert one GPL file. ``adopt``: dotted names other code of the node declares first."""
     data = document.data
     if not isinstance(data, dict) or len(data) != 1:
@@ -68,24 +59,22 @@ def import_gpl(
     ((top, tree),) = data.items()
     if not isinstance(tree, dict):
         raise GplError(f"{top!r} does not hold parameters")
-    name = schema_name(str(top))
+    name = schema_name(str(top), "gpl")
     importer = _Importer(document, checks_module or f"{name}_checks", adopt)
     parameters = importer.namespace(tree, (top,), (), [tree])
     parameters = {**importer.added, **parameters}
     importer.empty_key_lists(parameters, top)
     for name in sorted(importer.adopt):
         importer.warn((top,), f"--adopt {name}: the file declares no such parameter")
-    result = Imported(
+    return GplImported(
         name=name,
         data={"genparams": 1, "name": name, "parameters": parameters},
-        warnings=importer.warnings,
-        notes=importer.notes,
-        errors=importer.errors,
+        outcomes=tuple(importer.outcomes),
+        warnings=tuple(importer.warnings),
+        notes=tuple(importer.notes),
+        errors=tuple(importer.errors),
         customs=importer.customs,
-        parameters=importer.seen,
-        imported=importer.kept,
     )
-    return result
 
 
 class _Importer:
@@ -99,8 +88,7 @@ class _Importer:
         self.errors: list[SchemaProblem] = []
         self.notes: list[SchemaProblem] = []
         self.customs: dict[str, CustomUse] = {}
-        self.seen = 0
-        self.kept = 0
+        self.outcomes: list[Outcome] = []  # each GPL parameter's, open namespaces aside
         self.added: dict[str, dict[str, Any]] = {}  # key lists the GPL file lacks
         self.key_lists: set[str] = set()  # dotted names of the parameters keying maps
 
@@ -136,7 +124,7 @@ class _Importer:
                 self.warn(key_path, "neither a parameter (no type:) nor a namespace: left out")
         for index, key in enumerate(maps):
             if index:
-                self.count_lost(tree[key])
+                self.all_lost(tree[key], (*ros_path, "*"))
                 self.warn(
                     (*doc_path, key),
                     "a second map in one namespace: ROS names could not tell the two maps' "
@@ -183,7 +171,7 @@ class _Importer:
             self.note(doc_path, f"no parameter {wanted!r} keys this map: added it, a string_array")
             key_name = wanted
         if key_name is None:
-            self.count_lost(tree)
+            self.all_lost(tree, (*ros_path, "*"))
             self.warn(
                 doc_path,
                 f"{wanted!r} is not a string_array parameter in this namespace or an enclosing "
@@ -217,12 +205,14 @@ class _Importer:
                 return ".".join([*prefix, name])
         return None
 
-    def count_lost(self, tree: dict[str, Any]) -> None:
-        for value in tree.values():
-            if isinstance(value, dict) and "type" in value:
-                self.seen += value.get("type") != OPEN_TYPE
-            elif isinstance(value, dict):
-                self.count_lost(value)
+    def all_lost(self, tree: dict[str, Any], ros_path: tuple[str, ...]) -> None:
+        """Every parameter under ``tree``: left out."""
+        for key, value in tree.items():
+            if isinstance(value, dict) and "type" in value and value["type"] != OPEN_TYPE:
+                self.outcomes.append(Outcome(".".join((*ros_path, str(key))), LEFT_OUT))
+            elif isinstance(value, dict) and "type" not in value:
+                inner = "*" if str(key).startswith(MAP_PREFIX) else str(key)
+                self.all_lost(value, (*ros_path, inner))
 
     def leaf(
         self, leaf: dict[str, Any], doc_path: Path, ros_path: tuple[str, ...]
@@ -236,10 +226,11 @@ class _Importer:
             if leaf.get("description"):
                 out["description"] = leaf["description"]
             return out
-        self.seen += 1
+        name = ".".join(ros_path)
         base, capacity = _base_type(str(gpl_type))
         if base not in TYPES:
             self.warn((*doc_path, "type"), f"unknown type {gpl_type!r}: parameter left out")
+            self.outcomes.append(Outcome(name, LEFT_OUT))
             return None
         out = {"type": base}
         if "default_value" in leaf:
@@ -265,7 +256,7 @@ class _Importer:
         if leaf.get("additional_constraints"):
             out["additional_constraints"] = leaf["additional_constraints"]
         self.must_be_set(out, doc_path)
-        self.kept += 1
+        self.outcomes.append(Outcome(name, EXACT, name))
         return out
 
     def validators(

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import textwrap
 
-from genparams.gpl.convert import CustomUse, Imported
-from genparams.outputs.schema_yaml import schema_yaml
+from genparams.gpl.convert import CustomUse, GplImported
+from genparams.importing import schema_text as imported_schema_text
 
 # Python bodies for custom validators that ros2_controllers uses, whose meaning
 # their names and control_toolbox's documentation state: the import can write
@@ -28,15 +28,17 @@ KNOWN_BODIES = {
 }
 
 
-def schema_text(imported: Imported, source: str) -> str:
-    header = (
-        f"# genparams schema imported from the generate_parameter_library file {source}\n"
-        "# by `genparams import-gpl`. Edit freely: this file is now the source.\n"
+def schema_text(imported: GplImported, source: str) -> str:
+    return imported_schema_text(
+        imported,
+        [
+            f"genparams schema imported from the generate_parameter_library file {source}",
+            "by `genparams import-gpl`. Edit freely: this file is now the source.",
+        ],
     )
-    return header + schema_yaml(imported.data)
 
 
-def stub_text(imported: Imported, module: str) -> str:
+def stub_text(imported: GplImported, module: str) -> str:
     """A module defining every custom validator the schema references."""
     lines = [
         f'"""Custom validators of the {imported.name} schema.',

@@ -11,12 +11,12 @@ parameter is left out, never silently changed.
 from __future__ import annotations
 
 import math
-import re
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 from genparams.errors import ParameterProblem
+from genparams.importing import EXACT, LEFT_OUT, Imported, Outcome, schema_name
 from genparams.runtime.core.naming import NODE_PARAMETERS, is_ros_token
 from genparams.runtime.core.types import TYPES_BY_ROS_TYPE
 
@@ -40,55 +40,46 @@ class Reported:
     floating_point_range: tuple[float, float, float] | None = None
 
 
-@dataclass
-class Imported:
-    name: str
-    data: dict[str, Any]
-    warnings: list[ParameterProblem] = field(default_factory=list)  # node, parameter, why
-    notes: list[ParameterProblem] = field(default_factory=list)
-    parameters: int = 0  # parameters the node reported, its own rclpy ones aside
-    imported: int = 0  # of them, in the schema
-
-
-def schema_name(node: str) -> str:
-    """The node's base name as a schema name (snake_case, starting with a letter)."""
-    base = node.rstrip("/").rpartition("/")[2]
-    name = re.sub(r"[^a-z0-9_]", "_", re.sub(r"(?<=[a-z0-9])([A-Z])", r"_\1", base).lower())
-    return name if name[:1].isalpha() else f"node_{name}"
-
-
 def import_node(node: str, reported: Sequence[Reported], name: str | None = None) -> Imported:
-    """A schema declaring what ``node`` declares, with its current values as defaults."""
-    result = Imported(name or schema_name(node), {})
+    """A schema declaring what ``node`` declares, with its current values as defaults.
+    The parameters rclpy declares on every node are left out, each with a note."""
+    schema = name or schema_name(node.rstrip("/").rpartition("/")[2], "node")
     tree: dict[str, Any] = {}
     names = {r.name for r in reported}
+    outcomes: list[Outcome] = []
+    warnings: list[ParameterProblem] = []
+    notes: list[ParameterProblem] = []
     for param in sorted(reported, key=lambda r: r.name):
         if param.name in NODE_PARAMETERS:
-            result.notes.append(
+            notes.append(
                 ParameterProblem(param.name, "note: declared by rclpy itself: left out", place=node)
             )
             continue
-        result.parameters += 1
         problem = _problem(param, names)
         if problem is not None:
-            result.warnings.append(
+            warnings.append(
                 ParameterProblem(param.name, f"warning: {problem}: left out", place=node)
             )
+            outcomes.append(Outcome(param.name, LEFT_OUT))
             continue
-        leaf = _leaf(param)
         *spaces, last = param.name.split(".")
         namespace = tree
         for part in spaces:
             namespace = namespace.setdefault(part, {})
-        namespace[last] = leaf
-        result.imported += 1
-    result.data = {
-        "genparams": 1,
-        "name": result.name,
-        "description": f"Parameters of {node}, read from the running node.",
-        "parameters": tree,
-    }
-    return result
+        namespace[last] = _leaf(param)
+        outcomes.append(Outcome(param.name, EXACT, param.name))
+    return Imported(
+        name=schema,
+        data={
+            "genparams": 1,
+            "name": schema,
+            "description": f"Parameters of {node}, read from the running node.",
+            "parameters": tree,
+        },
+        outcomes=tuple(outcomes),
+        warnings=tuple(warnings),
+        notes=tuple(notes),
+    )
 
 
 def _problem(param: Reported, names: set[str]) -> str | None:

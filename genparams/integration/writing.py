@@ -11,18 +11,23 @@ from pathlib import Path
 
 
 def write_all(outputs: Mapping[Path, str]) -> None:
-    for path, text in outputs.items():
-        path.parent.mkdir(parents=True, exist_ok=True)
-        fd, temp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-        try:
+    """Write every output, or none: each is written in full to a temporary file beside its
+    path first, and only when all are written does each replace its path (atomically)."""
+    staged: list[tuple[str, Path]] = []
+    try:
+        for path, text in outputs.items():
+            path.parent.mkdir(parents=True, exist_ok=True)
+            fd, temp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+            staged.append((temp, path))
             with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as handle:
                 handle.write(text)
             # mkstemp makes the file private (0600); installs copy that mode along.
             os.chmod(temp, _file_mode(path))
+        for temp, path in staged:
             os.replace(temp, path)
-        except BaseException:
+    finally:  # a temporary file left is one that never replaced its path
+        for temp, _ in staged:
             Path(temp).unlink(missing_ok=True)
-            raise
 
 
 def _file_mode(path: Path) -> int:

@@ -13,7 +13,7 @@ import pytest
 import yaml
 
 import genparams
-from genparams.gpl.convert import Imported, import_gpl
+from genparams.gpl.convert import GplImported, import_gpl
 from genparams.gpl.emit import schema_text, stub_text
 from genparams.paramsfile.check_params import check_params
 from genparams.paramsfile.params_reader import read_params_file
@@ -51,7 +51,7 @@ REJECTED = {
 
 @dataclass
 class Loaded:
-    imported: Imported
+    imported: GplImported
     module: types.ModuleType
     schema_file: Path  # the imported genparams schema
 

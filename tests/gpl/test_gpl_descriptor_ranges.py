@@ -21,7 +21,7 @@ import pytest
 from rclpy.parameter import Parameter
 
 import genparams
-from genparams.gpl.convert import Imported, import_gpl
+from genparams.gpl.convert import GplImported, import_gpl
 from genparams.gpl.emit import schema_text, stub_text
 from genparams.schema.errors import SchemaError
 from genparams.schema.loader import load_yaml
@@ -79,7 +79,7 @@ def _gpl_file(tmp_path: Path) -> Path:
 
 
 @pytest.fixture(scope="module")
-def imported(tmp_path_factory: pytest.TempPathFactory) -> tuple[Imported, types.ModuleType]:
+def imported(tmp_path_factory: pytest.TempPathFactory) -> tuple[GplImported, types.ModuleType]:
     folder = tmp_path_factory.mktemp("gpl_shapes")
     source = _gpl_file(folder)
     checks = unique_name("shapes_checks")
@@ -106,7 +106,7 @@ def _declared(ros: RosHarness, module: types.ModuleType) -> Any:
 
 @pytest.mark.parametrize("name", sorted(SHAPES))
 def test_descriptor_range_is_gpls(
-    ros: RosHarness, imported: tuple[Imported, types.ModuleType], name: str
+    ros: RosHarness, imported: tuple[GplImported, types.ModuleType], name: str
 ) -> None:
     node = _declared(ros, imported[1])
     descriptor = node.describe_parameter(name)
@@ -122,7 +122,7 @@ def test_descriptor_range_is_gpls(
 
 
 def test_strict_bounds_still_refuse_their_limit(
-    ros: RosHarness, imported: tuple[Imported, types.ModuleType]
+    ros: RosHarness, imported: tuple[GplImported, types.ModuleType]
 ) -> None:
     """ROS lets a value within 1e-6 of a range's edge pass; GPL's own check refuses it."""
     node = _declared(ros, imported[1])
@@ -141,7 +141,7 @@ def test_strict_bounds_still_refuse_their_limit(
 
 
 def test_nan_items_pass_element_bounds_as_in_gpl(
-    ros: RosHarness, imported: tuple[Imported, types.ModuleType]
+    ros: RosHarness, imported: tuple[GplImported, types.ModuleType]
 ) -> None:
     node = _declared(ros, imported[1])
     client = ros.client(node)
@@ -155,7 +155,7 @@ def test_nan_items_pass_element_bounds_as_in_gpl(
 
 
 def test_key_list_of_one_empty_string_imports_as_no_keys(
-    ros: RosHarness, imported: tuple[Imported, types.ModuleType]
+    ros: RosHarness, imported: tuple[GplImported, types.ModuleType]
 ) -> None:
     result, module = imported
     assert result.data["parameters"]["joints"]["default"] == []
@@ -168,7 +168,7 @@ def test_key_list_of_one_empty_string_imports_as_no_keys(
 
 
 def test_custom_validator_in_gpls_python_convention(
-    ros: RosHarness, imported: tuple[Imported, types.ModuleType]
+    ros: RosHarness, imported: tuple[GplImported, types.ModuleType]
 ) -> None:
     """A check returning "" accepts (GPL's Python convention); any other text refuses."""
     result, module = imported
