@@ -16,11 +16,11 @@ params file names takes the parameters of the file's section (overrides_in.py).
 from __future__ import annotations
 
 import ast
-import re
 from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
+from genparams.importing import APPROXIMATE, EXACT, LEFT_OUT, Fate, Imported, Outcome, schema_name
 from genparams.rclpy_import.features import (
     ALLOW_UNDECLARED,
     AUTOMATIC,
@@ -41,59 +41,48 @@ from genparams.rclpy_import.placing import (
     written_name,
 )
 from genparams.rclpy_import.scope import SharePath, unparsed
-from genparams.runtime.core.naming import SCHEMA_NAME
 from genparams.schema.errors import Location, SchemaProblem
 
-EXACT = "exact"
-APPROXIMATE = "approximate"
-LEFT_OUT = "left out"
 _CONDITION_TYPES = ("bool", "int", "double", "string")
 
 
 @dataclass(frozen=True)
-class Outcome:
+class Declared:
     """One declaration's fate, and its schema key when imported (a per-item one's is its
     for_each leaf, ``offsets`` or ``*``; a mapped group's parameter's its place,
     ``gains.*.p``)."""
 
     found: Found | None  # None: a parameter of the params file the node declares as given
-    fate: str
+    fate: Fate
     key: str | None = None
 
 
 @dataclass(frozen=True)
-class Imported:
-    name: str
-    data: dict[str, Any]
-    warnings: tuple[SchemaProblem, ...] = ()
-    notes: tuple[SchemaProblem, ...] = ()
-    outcome: tuple[Outcome, ...] = ()
+class RclpyImported(Imported):
+    """A node's import: each declaration's fate (the patch rewrites by them)."""
+
+    declared: tuple[Declared, ...] = ()
     # the node declares what its overrides name, and the schema every parameter it reads:
     # the patch takes the option out
     replaces_automatic: bool = False
 
-    def count(self, fate: str) -> int:
-        return sum(1 for o in self.outcome if o.fate == fate)
-
     @property
     def imported_names(self) -> set[str]:
         """The names of the imported declarations; a per-item one's its schema key."""
-        return {o.key for o in self.outcome if o.fate != LEFT_OUT and o.key is not None}
+        return {d.key for d in self.declared if d.fate != LEFT_OUT and d.key is not None}
 
 
-def schema_name(unit_name: str, file_stem: str) -> str:
+def node_schema_name(unit_name: str, file_stem: str) -> str:
     """``KeyTeleopNode`` -> ``key_teleop``; a file's own functions take the file's name."""
     base = unit_name or file_stem
     if unit_name.endswith("Node") and len(unit_name) > len("Node"):
         base = unit_name[: -len("Node")]
-    name = re.sub(r"(?<=[a-z0-9])([A-Z])|(?<=[A-Z])([A-Z])(?=[a-z])", r"_\1\2", base).lower()
-    name = re.sub(r"[^a-z0-9_]+", "_", name).strip("_")
-    return name if SCHEMA_NAME.fullmatch(name) else f"node_{name}".rstrip("_")
+    return schema_name(base, "node")
 
 
 def convert(
     unit: Unit, name: str, overrides: Mapping[str, Any] | None = None, given_by: str = ""
-) -> Imported:
+) -> RclpyImported:
     """The schema of ``unit``; ``overrides`` are the parameters its params files give it
     (``given_by`` names them for notes)."""
     return _Converter(unit, name, overrides or {}, given_by).run()
@@ -107,12 +96,12 @@ class _Converter:
         self.given_by = given_by
         self.from_file: list[str] = []  # parameters only the params file names
         self.schema = SchemaTree()
-        self.fates: list[tuple[Found, str]] = []
+        self.fates: list[tuple[Found, Fate]] = []
         self.keys: dict[Found, str] = {}
         self.warnings: list[SchemaProblem] = []
         self.notes: list[SchemaProblem] = []
 
-    def run(self) -> Imported:
+    def run(self) -> RclpyImported:
         for found in self.unit.found:
             self.fates.append((found, self.declaration(found)))
         self.keep_groups_whole()
@@ -150,10 +139,16 @@ class _Converter:
         if self.unit.docstring:
             data["description"] = " ".join(self.unit.docstring.strip().split("\n\n")[0].split())
         data["parameters"] = self.schema.tree
-        outcome = tuple(Outcome(f, o, self.keys.get(f)) for f, o in self.fates)
-        outcome += tuple(Outcome(None, EXACT, n) for n in self.from_file)
-        return Imported(
-            self.name, data, tuple(self.warnings), tuple(self.notes), outcome, every_read
+        declared = [Declared(f, o, self.keys.get(f)) for f, o in self.fates]
+        declared += [Declared(None, EXACT, n) for n in self.from_file]
+        return RclpyImported(
+            name=self.name,
+            data=data,
+            outcomes=tuple(_outcome(d) for d in declared),
+            warnings=tuple(self.warnings),
+            notes=tuple(self.notes),
+            declared=tuple(declared),
+            replaces_automatic=every_read,
         )
 
     def take_from_file(self, open_prefixes: set[str]) -> None:
@@ -246,7 +241,7 @@ class _Converter:
             self.note(at, shown, f"declared by {found.via}")
         return exact
 
-    def declaration(self, found: Found) -> str:
+    def declaration(self, found: Found) -> Fate:
         at = found.where
         place: ItemPlace | None = None
         name: Any
@@ -436,3 +431,12 @@ class _Converter:
 def _computed_from_item(found: Found) -> bool:
     """A value computed from the loop's item that a sample item gives a value of."""
     return found.item_value is not None and found.item_value.problem is None
+
+
+def _outcome(declared: Declared) -> Outcome:
+    """A declaration's fate, as the importers report it: by the name the node gives it."""
+    found, key = declared.found, declared.key or ""
+    if found is None:
+        return Outcome(key, declared.fate, key)
+    name = found.name.value if isinstance(found.name.value, str) else written_name(found)
+    return Outcome(name or key or unparsed(found.at), declared.fate, key)

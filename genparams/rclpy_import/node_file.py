@@ -10,7 +10,7 @@ from pathlib import Path
 from typing import Any
 
 from genparams.errors import GenparamsError
-from genparams.rclpy_import.convert import Imported, convert, schema_name
+from genparams.rclpy_import.convert import RclpyImported, convert, node_schema_name
 from genparams.rclpy_import.features import AUTOMATIC, what_it_needs
 from genparams.rclpy_import.found import SourceFile, Unit
 from genparams.rclpy_import.package import Package
@@ -27,7 +27,7 @@ class ImportedNode:
     source: str  # the file's text
     tree: ast.Module
     unit: Unit
-    imported: Imported
+    imported: RclpyImported
 
     @property
     def unit_name(self) -> str:
@@ -75,7 +75,7 @@ def import_node(
         where = f"{first.where.line}:{first.where.column}" if first else "1:1"
         why = f": {what_it_needs(first)}" if first else ""
         raise NodeFileError(f"{file}:{where}: no parameter declaration found{why}")
-    name = schema_name(unit.name, Path(file).stem)
+    name = node_schema_name(unit.name, Path(file).stem)
     return ImportedNode(source, tree, unit, convert(unit, name, overrides, given_by))
 
 

@@ -22,11 +22,11 @@ from __future__ import annotations
 
 import ast
 import difflib
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 from pathlib import Path
 from typing import Any
 
-from genparams.rclpy_import.convert import LEFT_OUT
+from genparams.importing import LEFT_OUT
 from genparams.rclpy_import.features import AUTOMATIC
 from genparams.rclpy_import.found import Found
 from genparams.rclpy_import.node_file import ImportedNode
@@ -70,7 +70,7 @@ def unchanged_reason(node: ImportedNode) -> str:
             "declare again: the node is left as written (move those declarations to the "
             "schema by hand)"
         )
-    declared = [o.found for o in node.imported.outcome if o.found and o.found.read is None]
+    declared = [o.found for o in node.imported.declared if o.found and o.found.read is None]
     if declared and not any(f.receiver_is_self for f in declared):
         return "only declarations on self in a class are rewritten"
     return (
@@ -81,7 +81,7 @@ def unchanged_reason(node: ImportedNode) -> str:
 
 def _declared_elsewhere(node: ImportedNode) -> str | None:
     """A helper, base class or object of the package declaring an imported parameter."""
-    for each in node.imported.outcome:
+    for each in node.imported.declared:
         if each.found is not None and each.found.via is not None and each.fate != LEFT_OUT:
             return each.found.via
     return None
@@ -180,11 +180,11 @@ class _Patcher:
         """Statements to rewrite (declaring statements, or loops over literal items), each
         with its declarations; only when every declaration they make was imported."""
         outcomes: dict[ast.stmt, list[str]] = {}
-        for each in self.node.imported.outcome:
+        for each in self.node.imported.declared:
             if each.found is not None:
                 outcomes.setdefault(each.found.statement, []).append(each.fate)
         groups: dict[ast.stmt, list[tuple[Found, str]]] = {}
-        for each in self.node.imported.outcome:
+        for each in self.node.imported.declared:
             found, outcome = each.found, each.fate
             if found is None or found.via is not None:
                 continue  # declared outside the node's own statements: left as written
@@ -418,7 +418,7 @@ def _read_of(call: ast.Call, parents: dict[ast.AST, ast.AST]) -> ast.AST | None:
     return None
 
 
-def _always_set(schema: dict[str, Any], name: str) -> bool:
+def _always_set(schema: Mapping[str, Any], name: str) -> bool:
     """Whether the schema's parameter ``name`` holds a value whenever the node runs: it
     is declared unconditionally, under its own name (not one per item), and has a default
     or must be given one (not optional)."""
