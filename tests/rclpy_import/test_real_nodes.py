@@ -17,8 +17,8 @@ from rcl_interfaces.msg import ParameterDescriptor
 from rclpy.node import Node
 
 import genparams
-from genparams.outputs.schema_yaml import schema_yaml
 from genparams.importing import APPROXIMATE, EXACT, LEFT_OUT
+from genparams.outputs.schema_yaml import schema_yaml
 from genparams.rclpy_import.found import Found
 from genparams.rclpy_import.node_file import ImportedNode, import_node
 from genparams.rclpy_import.patch import patched_source
@@ -164,7 +164,9 @@ def test_patched_node_declares_what_the_hand_written_one_did(
     result = imported(case)
     hand = declared(hand_written(ros, case, import_file(NODES / case.file)))
     module = module_name(result.imported.name)
-    text = genparams.generate(f"{result.imported.name}.yaml", schema_yaml(dict(result.imported.data)))
+    text = genparams.generate(
+        f"{result.imported.name}.yaml", schema_yaml(dict(result.imported.data))
+    )
     (tmp_path / f"{module}.py").write_text(text, encoding="utf-8")
     patched = tmp_path / case.file
     patched.write_text(patched_source(result, str(NODES / case.file)), encoding="utf-8")
