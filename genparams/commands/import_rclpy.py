@@ -1,21 +1,27 @@
-"""genparams import-rclpy FILE.py [--class NAME] [-o SCHEMA] [--patch]"""
+"""genparams import-rclpy FILE.py [--class NAME] [--params-file FILE]... [-o SCHEMA] [--patch]"""
 
 from __future__ import annotations
 
 import argparse
 import sys
 from pathlib import Path
+from typing import Any
 
-from genparams.api import load_schema
 from genparams.commands._common import report
+from genparams.commands._importing import (
+    WRITTEN,
+    WRITTEN_WITH_WARNINGS,
+    finish,
+    read_source,
+    refuse_unwritable,
+)
 from genparams.errors import CommandError
-from genparams.integration.writing import write_all
-from genparams.outputs.schema_yaml import schema_yaml
-from genparams.rclpy_import.convert import APPROXIMATE, LEFT_OUT, Imported
-from genparams.rclpy_import.node_file import NodeFileError, import_node
-from genparams.rclpy_import.patch import patch_diff
+from genparams.importing import schema_text, write_outputs
+from genparams.paramsfile.node_sections import sections_for
+from genparams.paramsfile.params_reader import read_params_file
+from genparams.rclpy_import.node_file import NodeFileError, import_node, node_name, scanned
+from genparams.rclpy_import.patch import patch_diff, unchanged_reason
 from genparams.schema.errors import SchemaError
-from genparams.schema.loader import MAX_BYTES
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -31,6 +37,16 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
         help="the node class to import, when the file holds several",
     )
     parser.add_argument(
+        "--params-file",
+        dest="params_files",
+        action="append",
+        default=[],
+        type=Path,
+        metavar="FILE",
+        help="a params file the node is launched with (repeatable): a node declaring what "
+        "its overrides name takes its parameters from the node's section",
+    )
+    parser.add_argument(
         "-o", "--output", type=Path, metavar="SCHEMA", help="default: stdout (without --patch)"
     )
     parser.add_argument(
@@ -43,61 +59,48 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 
 def run(args: argparse.Namespace) -> int:
     file = str(args.source)
+    text = read_source(args.source, "node file")
     try:
-        if args.source.stat().st_size > MAX_BYTES:
-            raise CommandError(f"{file}:1:1: file is larger than {MAX_BYTES} bytes")
-        text = args.source.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise CommandError(f"{file}:1:1: cannot read: {exc}") from None
-    try:
-        node = import_node(text, file, args.class_name)
+        _, unit = scanned(text, file, args.class_name)
+        overrides, given_by = _overrides(args.params_files, node_name(unit))
+        node = import_node(text, file, args.class_name, overrides, given_by)
     except NodeFileError as exc:
         raise CommandError(exc) from None
     imported = node.imported
-    if not imported.imported_names:
-        _report(imported)
-        raise CommandError(
-            f"genparams import-rclpy: {file}: no parameter could be imported: nothing written",
-            exit_code=1,
-        )
-    schema = _header(args.source.name, node.unit_name) + schema_yaml(imported.data)
-    try:  # the result must be a schema genparams accepts, or nothing is written
-        load_schema(args.output or f"<{imported.name}>", schema)
-    except SchemaError as exc:
-        _report(imported)
-        raise CommandError(
-            exc, f"genparams import-rclpy: {file}: the imported schema is not valid"
-        ) from None
-    diff = patch_diff(node, file) if args.patch else None
-    _report(imported)
+    schema = schema_text(imported, _header(args.source.name, node.unit_name))
+    if not args.patch:
+        return finish("import-rclpy", file, imported, schema, args.output)
+    refuse_unwritable("import-rclpy", file, imported, schema)
+    diff = patch_diff(node, file)
+    report(*imported.findings(), imported.summary())
     if args.output is not None:
-        write_all({args.output: schema})
-    elif diff is None:
-        sys.stdout.write(schema)
+        write_outputs({args.output: schema})
     else:
         report("the schema is not written without -o SCHEMA")
-    if diff is not None:
-        if not diff:
-            report("the patch changes nothing: only declarations on self in a class are rewritten")
-        sys.stdout.write(diff)
-    return 1 if imported.warnings else 0
+    if not diff:
+        report(f"the patch changes nothing: {unchanged_reason(node)}")
+    sys.stdout.write(diff)
+    return WRITTEN_WITH_WARNINGS if imported.warnings else WRITTEN
 
 
-def _header(source: str, unit_name: str) -> str:
+def _overrides(files: list[Path], node: str | None) -> tuple[dict[str, Any], str]:
+    """The parameters ``files`` give the node named ``node`` (later files win), and the
+    files' names; without a node name, only sections for every node (``/**``) apply."""
+    documents = []
+    for path in files:
+        text = read_source(path, "params file")
+        document = read_params_file(text, str(path))
+        if document.problems:
+            raise CommandError(SchemaError(list(document.problems)))
+        documents.append(document.sections)
+    applied, _ = sections_for(documents, f"/{node}" if node else "/_")
+    values = {e.name: e.value for section in applied for e in section.entries}
+    return values, ", ".join(str(p) for p in files)
+
+
+def _header(source: str, unit_name: str) -> list[str]:
     what = f"the class {unit_name} in {source}" if unit_name else source
-    return (
-        f"# genparams schema imported from the rclpy node {what}\n"
-        "# by `genparams import-rclpy`. Edit freely: this file is now the source.\n"
-    )
-
-
-def _report(imported: Imported) -> None:
-    report(*sorted([*imported.warnings, *imported.notes]))
-    total = len(imported.outcome)
-    lost = imported.count(LEFT_OUT)
-    approximate = imported.count(APPROXIMATE)
-    report(
-        f"imported {total - lost} of {total} parameters"
-        + (f" ({approximate} approximately)" if approximate else "")
-        + (f"; {lost} left out (see warnings)" if lost else "")
-    )
+    return [
+        f"genparams schema imported from the rclpy node {what}",
+        "by `genparams import-rclpy`. Edit freely: this file is now the source.",
+    ]

@@ -8,8 +8,8 @@ leave the rest to the author (a warning).
 
 from __future__ import annotations
 
+from genparams.rclpy_import.found import NodeOption
 from genparams.rclpy_import.overrides import BY_PREFIX
-from genparams.rclpy_import.scan import NodeOption
 
 ALLOW_UNDECLARED = "allow_undeclared_parameters"
 AUTOMATIC = "automatically_declare_parameters_from_overrides"

@@ -22,66 +22,28 @@ from __future__ import annotations
 
 import ast
 import difflib
-from collections.abc import Iterable, Iterator
-from dataclasses import dataclass
+from collections.abc import Iterator, Mapping
 from pathlib import Path
 from typing import Any
 
-from genparams.rclpy_import.convert import LEFT_OUT, item_place
+from genparams.importing import LEFT_OUT
 from genparams.rclpy_import.features import AUTOMATIC
+from genparams.rclpy_import.found import Found
 from genparams.rclpy_import.node_file import ImportedNode
-from genparams.rclpy_import.overrides import reads_overrides
-from genparams.rclpy_import.scan import DECLARE_ONE, Found
+from genparams.rclpy_import.placing import item_place
+from genparams.rclpy_import.reads import DECLARE_ONE
+from genparams.rclpy_import.source_edits import (
+    Edit,
+    Source,
+    apply_edits,
+    drop_unused_descriptors,
+    drop_unused_imports,
+)
 from genparams.rclpy_import.values import Evaluator, Scope, UntranslatableError
 from genparams.runtime.core.naming import attribute_parts, class_name, module_name
 
 _READ_ATTRIBUTES = ("value",)
 LINE_LENGTH = 100  # the longest line a rewritten call is written on (ruff's E501 at 100)
-
-
-@dataclass(frozen=True)
-class _Edit:
-    start: int  # character offsets into the source
-    end: int
-    text: str
-
-
-class _Source:
-    def __init__(self, text: str) -> None:
-        self.text = text
-        self.lines = text.splitlines(keepends=True)
-        self.starts = [0]
-        for line in self.lines:
-            self.starts.append(self.starts[-1] + len(line))
-
-    def offset(self, line: int, byte_column: int) -> int:
-        return self.starts[line - 1] + self.column(line, byte_column)
-
-    def column(self, line: int, byte_column: int) -> int:
-        """The character column of a byte column (as ast gives it) on ``line``."""
-        text = self.lines[line - 1] if line - 1 < len(self.lines) else ""
-        return len(text.encode("utf-8")[:byte_column].decode("utf-8", errors="replace"))
-
-    def span(self, node: ast.AST) -> tuple[int, int]:
-        start = self.offset(node.lineno, node.col_offset)  # type: ignore[attr-defined]
-        end = self.offset(node.end_lineno, node.end_col_offset)  # type: ignore[attr-defined]
-        return start, end
-
-    def line_span(self, node: ast.stmt) -> tuple[int, int] | None:
-        """The whole lines of ``node``, if nothing else stands on them (comments may)."""
-        start, end = self.span(node)
-        line_start = self.starts[node.lineno - 1]
-        assert node.end_lineno is not None
-        line_end = self.starts[node.end_lineno]
-        before = self.text[line_start:start]
-        after = self.text[end:line_end].strip()
-        if before.strip() or (after and not after.startswith("#")):
-            return None
-        return line_start, line_end
-
-    def indent(self, node: ast.stmt) -> str:
-        line = self.lines[node.lineno - 1]
-        return line[: len(line) - len(line.lstrip())]
 
 
 def patch_diff(node: ImportedNode, file: str) -> str:
@@ -94,19 +56,48 @@ def patch_diff(node: ImportedNode, file: str) -> str:
                    for line in lines)  # fmt: skip
 
 
-def patched_source(node: ImportedNode, file: str) -> str:
+def unchanged_reason(node: ImportedNode) -> str:
+    """Why the patch of ``node`` changes nothing, for the message."""
     if not isinstance(node.unit.node, ast.ClassDef):
+        return (
+            "the module's functions declare the parameters: only declarations on self in "
+            "a class are rewritten"
+        )
+    elsewhere = _declared_elsewhere(node)
+    if elsewhere is not None:
+        return (
+            f"{elsewhere} declares imported parameters, which the generated class would "
+            "declare again: the node is left as written (move those declarations to the "
+            "schema by hand)"
+        )
+    declared = [o.found for o in node.imported.declared if o.found and o.found.read is None]
+    if declared and not any(f.receiver_is_self for f in declared):
+        return "only declarations on self in a class are rewritten"
+    return (
+        "every declaring statement also declares a parameter left out (see warnings), so "
+        "it stays as written"
+    )
+
+
+def _declared_elsewhere(node: ImportedNode) -> str | None:
+    """A helper, base class or object of the package declaring an imported parameter."""
+    for each in node.imported.declared:
+        if each.found is not None and each.found.via is not None and each.fate != LEFT_OUT:
+            return each.found.via
+    return None
+
+
+def patched_source(node: ImportedNode, file: str) -> str:
+    if not isinstance(node.unit.node, ast.ClassDef) or _declared_elsewhere(node) is not None:
         return node.source  # declarations on other receivers: left to the author
-    return _Patcher(node, file).run()
+    return _Patcher(node, node.unit.node, file).run()
 
 
 class _Patcher:
-    def __init__(self, node: ImportedNode, file: str) -> None:
+    def __init__(self, node: ImportedNode, cls: ast.ClassDef, file: str) -> None:
         self.node = node
         self.file = file
-        self.source = _Source(node.source)
-        cls = node.unit.node
-        assert isinstance(cls, ast.ClassDef)
+        self.source = Source(node.source)
         self.cls = cls
         self.parents = {
             child: parent for parent in ast.walk(cls) for child in ast.iter_child_nodes(parent)
@@ -115,9 +106,10 @@ class _Patcher:
         self.class_name = class_name(self.schema)
         self.attribute = _free_attribute(cls)
         self.names = node.imported.imported_names
-        self.edits: list[_Edit] = []
+        self.edits: list[Edit] = []
         self.removed: list[ast.stmt] = []
-        self.removals: dict[int, _Edit] = {}
+        self.removals: dict[ast.stmt, Edit] = {}
+        self.kept: list[ast.stmt] = []  # declare_parameters statements keeping part of a list
 
     def run(self) -> str:
         patchable = self.patchable()
@@ -128,9 +120,13 @@ class _Patcher:
             if not patchable:  # the node only reads: declare once the node is built
                 statement = self.statement_of(automatic)
                 at = self.source.starts[statement.end_lineno or statement.lineno]
-                self.edits.append(_Edit(at, at, f"{self.source.indent(statement)}{declare}\n"))
-        elif not patchable:
+                self.edits.append(Edit(at, at, f"{self.source.indent(statement)}{declare}\n"))
+        elif not patchable and not self.kept:
             return self.node.source
+        elif not patchable:  # a list imported in part: genparams declares before it
+            first = min(self.kept, key=lambda s: (s.lineno, s.col_offset))
+            start = self.source.starts[first.lineno - 1]
+            self.edits.append(Edit(start, start, f"{self.source.indent(first)}{declare}\n"))
         if patchable:
             first = min(patchable, key=lambda s: (s.lineno, s.col_offset))
             removed_first = False
@@ -142,10 +138,10 @@ class _Patcher:
             self.fill_emptied(first if removed_first else None)
         self.rewrite_reads()
         self.add_import()
-        text = _apply(self.node.source, self.edits)
+        text = apply_edits(self.node.source, self.edits)
         for _ in range(3):  # a descriptor may use a range variable
-            text = _drop_unused_descriptors(text)
-        return _drop_unused_imports(self.node.source, text)
+            text = drop_unused_descriptors(text)
+        return drop_unused_imports(self.node.source, text)
 
     def automatic_option(self) -> ast.keyword | None:
         """``automatically_declare_parameters_from_overrides=True`` in the class, when the
@@ -166,7 +162,8 @@ class _Patcher:
     def drop_keyword(self, keyword: ast.keyword) -> None:
         """Take ``keyword`` out of its call, with the comma before it (or after it)."""
         call = self.parents[keyword]
-        assert isinstance(call, ast.Call)
+        if not isinstance(call, ast.Call):
+            return
         arguments: list[ast.AST] = sorted(
             [*call.args, *call.keywords],
             key=lambda n: (n.lineno, n.col_offset),  # type: ignore[attr-defined]
@@ -177,16 +174,20 @@ class _Patcher:
             start = self.source.span(arguments[index - 1])[1]
         elif index + 1 < len(arguments):
             end = self.source.span(arguments[index + 1])[0]
-        self.edits.append(_Edit(start, end, ""))
+        self.edits.append(Edit(start, end, ""))
 
     def patchable(self) -> dict[ast.stmt, list[Found]]:
         """Statements to rewrite (declaring statements, or loops over literal items), each
         with its declarations; only when every declaration they make was imported."""
-        outcomes: dict[int, list[str]] = {}
-        for found, outcome in self.node.imported.outcome:
-            outcomes.setdefault(id(found.statement), []).append(outcome)
+        outcomes: dict[ast.stmt, list[str]] = {}
+        for each in self.node.imported.declared:
+            if each.found is not None:
+                outcomes.setdefault(each.found.statement, []).append(each.fate)
         groups: dict[ast.stmt, list[tuple[Found, str]]] = {}
-        for found, outcome in self.node.imported.outcome:
+        for each in self.node.imported.declared:
+            found, outcome = each.found, each.fate
+            if found is None or found.via is not None:
+                continue  # declared outside the node's own statements: left as written
             if found.read is not None:
                 continue  # a read stays: genparams declared the parameter it reads
             statement: ast.stmt = (
@@ -205,7 +206,7 @@ class _Patcher:
             out[statement] = [f for f, _ in items]
         return out
 
-    def enclosing(self, found: Found, outcomes: dict[int, list[str]]) -> ast.stmt | None:
+    def enclosing(self, found: Found, outcomes: dict[ast.stmt, list[str]]) -> ast.stmt | None:
         """The loop over a parameter's value, or the ``if`` on one, around a declaration,
         when it only declares parameters the schema now holds (per-item, conditional):
         it goes whole."""
@@ -214,7 +215,7 @@ class _Patcher:
             return None
         if not _only_declares(parent):
             return None
-        if any(LEFT_OUT in outcomes.get(id(s), [LEFT_OUT]) for s in parent.body):
+        if any(LEFT_OUT in outcomes.get(s, [LEFT_OUT]) for s in parent.body):
             return None
         return parent
 
@@ -238,13 +239,13 @@ class _Patcher:
             text = open_ + ", ".join(texts) + ("," if len(texts) == 1 and close == ")" else "")
         else:
             inner = " " * getattr(kept[0], "col_offset", 4)
-            assert parent.end_lineno is not None
-            last = self.source.lines[parent.end_lineno - 1]
+            last = self.source.lines[(parent.end_lineno or parent.lineno) - 1]
             outer = last[: len(last) - len(last.lstrip())]
             if not last.lstrip().startswith(close):
                 outer = self.source.indent(statement)
             text = open_ + "\n" + "".join(f"{inner}{t},\n" for t in texts) + outer
-        self.edits.append(_Edit(start, end, text + close))
+        self.edits.append(Edit(start, end, text + close))
+        self.kept.append(statement)
 
     def rewrite(self, statement: ast.stmt, founds: list[Found]) -> bool:
         """Rewrite one statement; True when it is removed."""
@@ -253,8 +254,7 @@ class _Patcher:
         ):
             self.remove(statement)
             return True
-        calls = {id(f.call): f.call for f in founds}
-        for call in calls.values():
+        for call in dict.fromkeys(f.call for f in founds):
             self.replace_use(call, [f for f in founds if f.call is call])
         return False
 
@@ -262,37 +262,37 @@ class _Patcher:
         span = self.source.line_span(statement)
         if span is None:
             start, end = self.source.span(statement)
-            edit = _Edit(start, end, "pass")
+            edit = Edit(start, end, "pass")
         else:
-            edit = _Edit(span[0], span[1], "")
+            edit = Edit(span[0], span[1], "")
         self.edits.append(edit)
-        self.removals[id(statement)] = edit
+        self.removals[statement] = edit
         self.removed.append(statement)
 
     def replace_use(self, call: ast.Call, founds: list[Found]) -> None:
-        assert isinstance(call.func, ast.Attribute)
-        if call.func.attr == DECLARE_ONE:
+        if isinstance(call.func, ast.Attribute) and call.func.attr == DECLARE_ONE:
             name = founds[0].name.value
             if isinstance(name, str) and self.typed_read_span(call, name) is not None:
                 return
             start, end = self.source.span(call)
             quoted = self.name_text(call, founds[0])
             text = self.fitted(call, "self.get_parameter", [quoted], listed=False)
-            self.edits.append(_Edit(start, end, text))
+            self.edits.append(Edit(start, end, text))
             return
         start, end = self.source.span(call)
         names = [self.name_text(call, found) for found in founds]
-        self.edits.append(_Edit(start, end, self.fitted(call, "self.get_parameters", names)))
+        self.edits.append(Edit(start, end, self.fitted(call, "self.get_parameters", names)))
 
     def fitted(self, call: ast.Call, function: str, names: list[str], listed: bool = True) -> str:
         """``function(names)`` in place of ``call``, written as ruff format would, so that
         no line runs past LINE_LENGTH: on one line if the line fits, else the argument on
         a line of its own, else one name a line."""
         lines = self.source.lines
-        assert call.end_lineno is not None and call.end_col_offset is not None
-        first, last = lines[call.lineno - 1], lines[call.end_lineno - 1].rstrip("\r\n")
+        end_line = call.end_lineno or call.lineno
+        end_column = call.end_col_offset or call.col_offset
+        first, last = lines[call.lineno - 1], lines[end_line - 1].rstrip("\r\n")
         before = first[: self.source.column(call.lineno, call.col_offset)]
-        after = last[self.source.column(call.end_lineno, call.end_col_offset) :]
+        after = last[self.source.column(end_line, end_column) :]
         argument = f"[{', '.join(names)}]" if listed else names[0]
         text = f"{function}({argument})"
         if len(before) + len(text) + len(after) <= LINE_LENGTH:
@@ -310,7 +310,8 @@ class _Patcher:
         if found.name.problem is None:
             return self.quoted(call, found.name.value)
         place = item_place(found)
-        assert place is not None and found.loop_variable is not None
+        if place is None or found.loop_variable is None:  # only such names are imported
+            return self.quoted(call, str(found.name.value))
         parts = [place.head, "{" + found.loop_variable + "}", place.tail]
         if parts == ["", parts[1], ""]:
             return found.loop_variable
@@ -327,27 +328,27 @@ class _Patcher:
             literal = '"' + literal[1:-1] + '"'
         return literal
 
-    def typed_read_span(self, call: ast.Call, name: str) -> _Edit | None:
+    def typed_read_span(self, call: ast.Call, name: str) -> Edit | None:
         """``<call>.value`` or ``<call>.get_parameter_value().x_value`` -> a typed read."""
         outer = _read_of(call, self.parents)
         if outer is None:
             return None
         start, end = self.source.span(outer)
         read = ".".join((f"self.{self.attribute}", *attribute_parts(name)))
-        edit = _Edit(start, end, read)
+        edit = Edit(start, end, read)
         self.edits.append(edit)
         return edit
 
     def place_declare(self, first: ast.stmt, declare: str, removed_first: bool) -> None:
         indent = self.source.indent(first)
         if removed_first:
-            old = self.removals[id(first)]
+            old = self.removals[first]
             self.edits.remove(old)
             text = f"{indent}{declare}\n" if old.text == "" else declare
-            self.edits.append(_Edit(old.start, old.end, text))
+            self.edits.append(Edit(old.start, old.end, text))
         else:
             start = self.source.starts[first.lineno - 1]
-            self.edits.append(_Edit(start, start, f"{indent}{declare}\n"))
+            self.edits.append(Edit(start, start, f"{indent}{declare}\n"))
 
     def fill_emptied(self, keep: ast.stmt | None) -> None:
         """A block whose every statement was removed gets ``pass``."""
@@ -357,10 +358,10 @@ class _Patcher:
                 continue
             if not all(s in self.removed for s in body):
                 continue
-            old = self.removals[id(statement)]
+            old = self.removals[statement]
             self.edits.remove(old)
             text = f"{self.source.indent(statement)}pass\n" if old.text == "" else "pass"
-            self.edits.append(_Edit(old.start, old.end, text))
+            self.edits.append(Edit(old.start, old.end, text))
 
     def rewrite_reads(self) -> None:
         scope = Scope(class_name=self.cls.name)
@@ -388,7 +389,7 @@ class _Patcher:
             if any(s < end and start < e for s, e in taken):
                 continue
             read = ".".join((f"self.{self.attribute}", *attribute_parts(name)))
-            self.edits.append(_Edit(start, end, read))
+            self.edits.append(Edit(start, end, read))
 
     def add_import(self) -> None:
         package = (Path(self.file).parent / "__init__.py").is_file()
@@ -397,20 +398,7 @@ class _Patcher:
         imports = [s for s in self.node.tree.body if isinstance(s, (ast.Import, ast.ImportFrom))]
         last = max((s.end_lineno or s.lineno for s in imports), default=0)
         at = self.source.starts[last]
-        self.edits.append(_Edit(at, at, line))
-
-
-def _apply(text: str, edits: list[_Edit]) -> str:
-    out = []
-    position = 0
-    for edit in sorted(edits, key=lambda e: (e.start, e.end)):
-        if edit.start < position:
-            continue  # overlapping: the first edit wins
-        out.append(text[position : edit.start])
-        out.append(edit.text)
-        position = edit.end
-    out.append(text[position:])
-    return "".join(out)
+        self.edits.append(Edit(at, at, line))
 
 
 def _read_of(call: ast.Call, parents: dict[ast.AST, ast.AST]) -> ast.AST | None:
@@ -430,7 +418,7 @@ def _read_of(call: ast.Call, parents: dict[ast.AST, ast.AST]) -> ast.AST | None:
     return None
 
 
-def _always_set(schema: dict[str, Any], name: str) -> bool:
+def _always_set(schema: Mapping[str, Any], name: str) -> bool:
     """Whether the schema's parameter ``name`` holds a value whenever the node runs: it
     is declared unconditionally, under its own name (not one per item), and has a default
     or must be given one (not optional)."""
@@ -495,105 +483,3 @@ def _free_attribute(cls: ast.ClassDef) -> str:
         if candidate not in used:
             return candidate
     return "genparams_params"
-
-
-def _drop_unused_imports(before: str, text: str) -> str:
-    """Imported names the patch took the last use of leave their import statements."""
-    try:
-        tree = ast.parse(text)
-        was_used = _used_names(ast.parse(before))
-    except SyntaxError:
-        return text
-    used = _used_names(tree)
-    source = _Source(text)
-    edits = []
-    for statement in tree.body:
-        if not isinstance(statement, (ast.Import, ast.ImportFrom)):
-            continue
-        if isinstance(statement, ast.ImportFrom) and statement.module == "__future__":
-            continue
-        kept = [
-            a
-            for a in statement.names
-            if (bound := a.asname or a.name.partition(".")[0]) in used or bound not in was_used
-        ]
-        span = source.line_span(statement)
-        if len(kept) == len(statement.names) or span is None:
-            continue
-        names = ", ".join(a.name + (f" as {a.asname}" if a.asname else "") for a in kept)
-        if not kept:
-            replacement = ""
-        elif isinstance(statement, ast.ImportFrom):
-            module = "." * statement.level + (statement.module or "")
-            replacement = f"from {module} import {names}\n"
-        else:
-            replacement = f"import {names}\n"
-        edits.append(_Edit(span[0], span[1], replacement))
-    return _apply(text, edits)
-
-
-def _used_names(tree: ast.Module) -> set[str]:
-    return {n.id for n in ast.walk(tree) if isinstance(n, ast.Name)}
-
-
-_MESSAGES = ("ParameterDescriptor", "FloatingPointRange", "IntegerRange")
-
-
-def _drop_unused_descriptors(text: str) -> str:
-    """``desc = ParameterDescriptor(...)`` (and ``desc.x = ...``) whose declaration went,
-    and ``names = {...}`` of the keys under a prefix in the overrides whose loop went."""
-    try:
-        tree = ast.parse(text)
-    except SyntaxError:
-        return text
-    source = _Source(text)
-    edits = []
-    for function in ast.walk(tree):
-        if not isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
-            continue
-        setters = {
-            id(target.value): statement
-            for statement in ast.walk(function)
-            if isinstance(statement, ast.Assign)
-            for target in statement.targets
-            if isinstance(target, ast.Attribute) and isinstance(target.value, ast.Name)
-        }
-        loaded = {
-            n.id
-            for n in ast.walk(function)
-            if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load) and id(n) not in setters
-        }
-        for statement in ast.walk(function):
-            if not isinstance(statement, ast.Assign) or len(statement.targets) != 1:
-                continue
-            target = statement.targets[0]
-            value = statement.value
-            if (
-                isinstance(target, ast.Name)
-                and target.id not in loaded
-                and (
-                    (isinstance(value, ast.Call) and _called(value) in _MESSAGES)
-                    or reads_overrides(value)
-                )
-            ):
-                for dropped in [statement, *_sets_of(target.id, setters.values())]:
-                    span = source.line_span(dropped)
-                    if span is not None:
-                        edits.append(_Edit(span[0], span[1], ""))
-    return _apply(text, edits)
-
-
-def _sets_of(name: str, setters: Iterable[ast.Assign]) -> list[ast.Assign]:
-    return [
-        s
-        for s in setters
-        if any(
-            isinstance(t, ast.Attribute) and isinstance(t.value, ast.Name) and t.value.id == name
-            for t in s.targets
-        )
-    ]
-
-
-def _called(call: ast.Call) -> str:
-    func = call.func
-    return func.attr if isinstance(func, ast.Attribute) else getattr(func, "id", "")

@@ -12,11 +12,41 @@ from __future__ import annotations
 import ast
 import math
 import operator
-from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field, replace
+import os.path
+from collections.abc import Callable
+from dataclasses import replace
 from typing import Any
 
-from genparams.errors import GenparamsError
+from genparams.rclpy_import.scope import (
+    Binding,
+    DescriptorValue,
+    Elsewhere,
+    RangeValue,
+    Scope,
+    SharePath,
+    TypeMarker,
+    UntranslatableError,
+    assigned_once_before,
+    before,
+    constants,
+    dotted_name,
+    last_before,
+    unparsed,
+)
+
+__all__ = [
+    "DescriptorValue",
+    "Evaluator",
+    "RangeValue",
+    "Scope",
+    "SharePath",
+    "TypeMarker",
+    "UntranslatableError",
+    "assigned_once_before",
+    "dotted_name",
+    "evaluate_constant",
+    "unparsed",
+]
 
 # rclpy's Parameter.Type members (and rcl_interfaces' ParameterType constants) -> schema types.
 ROS_TYPES = {
@@ -66,96 +96,34 @@ RCLPY_ENUMS = {
 _MAX_DEPTH = 32  # constants defined through constants, never in a loop
 
 
-class UntranslatableError(GenparamsError):
-    """A construct the import cannot turn into a value; ``what`` names it for a warning."""
-
-    def __init__(self, node: ast.AST, what: str) -> None:
-        super().__init__(what)
-        self.node = node
-        self.what = what
-
-
-@dataclass(frozen=True)
-class TypeMarker:
-    """``Parameter.Type.DOUBLE``: a type given instead of a value."""
-
-    schema_type: str
+_NUMPY = ("np", "numpy")
+_FUNCTIONS: dict[str, Callable[..., Any]] = {
+    "math.radians": math.radians,
+    "math.degrees": math.degrees,
+    "math.sqrt": math.sqrt,
+    "abs": abs,
+    "min": min,
+    "max": max,
+    "round": round,
+}
+_SHARE = "get_package_share_directory"
+_MAX_ITEMS = 4096  # a list repeated (``[0.0] * n``) is computed up to this length
 
 
-@dataclass(frozen=True)
-class RangeValue:
-    integer: bool
-    from_value: float
-    to_value: float
-    step: float
-
-
-@dataclass
-class DescriptorValue:
-    """A ParameterDescriptor(...) as the source builds it: fields read, and fields that
-    could not be read with the reason."""
-
-    fields: dict[str, Any] = field(default_factory=dict)
-    failed: dict[str, UntranslatableError] = field(default_factory=dict)
-
-
-@dataclass
-class Scope:
-    """Where names resolve: loop variables, the function's own variables, the class's
-    constants, the module's constants."""
-
-    loop: Mapping[str, Any] = field(default_factory=dict)
-    local: Mapping[str, list[ast.stmt]] = field(default_factory=dict)  # assignments
-    class_name: str | None = None
-    class_constants: Mapping[str, ast.expr] = field(default_factory=dict)
-    module_constants: Mapping[str, ast.expr] = field(default_factory=dict)
-    # Helpers that build a value (``def ranged(lo, hi): return ParameterDescriptor(...)``):
-    # the module's functions, the class's methods (as "self.name") and nested functions.
-    functions: Mapping[str, ast.FunctionDef] = field(default_factory=dict)
-
-    def with_loop(self, bindings: Mapping[str, Any]) -> Scope:
-        return replace(self, loop={**self.loop, **bindings})
-
-
-def unparsed(node: ast.AST, limit: int = 60) -> str:
-    text = ast.unparse(node)
-    return text if len(text) <= limit else text[: limit - 3] + "..."
-
-
-def dotted_name(node: ast.AST) -> str | None:
-    """``a.b.c`` for a chain of attributes on a name, else None."""
-    parts: list[str] = []
-    while isinstance(node, ast.Attribute):
-        parts.append(node.attr)
-        node = node.value
-    if isinstance(node, ast.Name):
-        parts.append(node.id)
-        return ".".join(reversed(parts))
-    return None
-
-
-def assigned_once_before(node: ast.AST, scope: Scope) -> ast.Assign | None:
-    """The one assignment of the variable ``node`` (``v`` or ``self.v``) in the function,
-    when it ends before this use."""
-    key = dotted_name(node)
-    if key is None or key.count(".") > 1 or ("." in key and not key.startswith("self.")):
-        return None
-    assigned = scope.local.get(key, [])
-    if len(assigned) != 1:
-        return None
-    statement = assigned[0]
-    end = (statement.end_lineno or statement.lineno, statement.end_col_offset or 0)
-    if end > (getattr(node, "lineno", 0), getattr(node, "col_offset", 0)):
-        return None
-    if not isinstance(statement, ast.Assign) or len(statement.targets) != 1:
-        return None
-    return statement
+def evaluate_constant(expression: ast.expr, module: ast.Module | None = None) -> Any:
+    """The value of ``expression``, read statically with the constants ``module`` assigns
+    once at its top level (``RATE = 10.0``): literals, arithmetic, ``math.pi``, f-strings,
+    share-directory paths (a ``SharePath``). Raises ``UntranslatableError`` naming the
+    construct for anything else; nothing is ever run."""
+    bound: dict[str, Binding] = dict(constants(module.body)) if module is not None else {}
+    return Evaluator(Scope(module_constants=bound)).value(expression)
 
 
 class Evaluator:
     def __init__(self, scope: Scope) -> None:
         self.scope = scope
         self.depth = 0
+        self.parameters_read: list[str] = []  # parameters a value was computed from
 
     def value(self, node: ast.expr) -> Any:
         self.depth += 1
@@ -185,11 +153,15 @@ class Evaluator:
                 return -operand if isinstance(node.op, ast.USub) else operand
         if isinstance(node, ast.BinOp) and type(node.op) in _BINARY:
             left, right = self.value(node.left), self.value(node.right)
+            if _repeated(node.op, left, right):
+                return left * right if isinstance(left, list) else right * left
             if _same_kind(left, right) and not _too_large(node.op, left, right):
                 try:
-                    return _BINARY[type(node.op)](left, right)
+                    result = _BINARY[type(node.op)](left, right)
                 except (ArithmeticError, TypeError, ValueError):
                     pass
+                else:
+                    return SharePath(result) if isinstance(left, SharePath) else result
         if isinstance(node, ast.JoinedStr):
             return self._formatted(node)
         if isinstance(node, ast.Name):
@@ -207,25 +179,26 @@ class Evaluator:
         raise UntranslatableError(node, f"the expression {unparsed(node)!r}")
 
     def _formatted(self, node: ast.JoinedStr) -> str:
-        parts = []
+        parts: list[str] = []
         for part in node.values:
             if isinstance(part, ast.Constant):
                 parts.append(str(part.value))
             elif isinstance(part, ast.FormattedValue):
                 if part.format_spec is not None or part.conversion != -1:
                     raise UntranslatableError(part, f"the formatted value {unparsed(node)!r}")
-                parts.append(str(self.value(part.value)))
-        return "".join(parts)
+                parts.append(self.value(part.value))
+        text = "".join(str(p) for p in parts)
+        return SharePath(text) if parts and isinstance(parts[0], SharePath) else text
 
     def _name(self, node: ast.Name) -> Any:
         scope = self.scope
         if node.id in scope.loop:
             return scope.loop[node.id]
-        assigned = _last_before(scope.local.get(node.id, []), node)
+        assigned = last_before(scope.local.get(node.id, []), node)
         if assigned is not None:
             return self._assigned(assigned, node)
         if node.id in scope.module_constants:
-            return self.value(scope.module_constants[node.id])
+            return self.bound(scope.module_constants[node.id])
         raise UntranslatableError(node, f"the variable {node.id!r}")
 
     def _assigned(self, statement: ast.stmt, use: ast.Name) -> Any:
@@ -240,14 +213,24 @@ class Evaluator:
         """``descriptor.read_only = True`` after the descriptor was made, before its use."""
         sets = self.scope.local.get(f"{use.id}.*", [])
         for statement in sets:
-            if not _before(statement, use):
+            if not isinstance(statement, ast.Assign) or not before(statement, use):
                 continue
-            assert isinstance(statement, ast.Assign)
             target = statement.targets[0]
-            assert isinstance(target, ast.Attribute)
-            self._descriptor_field(descriptor, target.attr, statement.value)
+            if isinstance(target, ast.Attribute):
+                self._descriptor_field(descriptor, target.attr, statement.value)
+
+    def bound(self, binding: Binding) -> Any:
+        """A constant's value, read where it is bound (another module's, in its scope)."""
+        if isinstance(binding, Elsewhere):
+            inner = Evaluator(binding.scope)
+            inner.depth = self.depth
+            return inner.value(binding.expression)
+        return self.value(binding)
 
     def _attribute(self, node: ast.Attribute) -> Any:
+        read = self._parameter_read(node)
+        if read is not None:
+            return read
         name = dotted_name(node)
         if name is not None:
             head, _, rest = name.partition(".")
@@ -265,14 +248,17 @@ class Evaluator:
             enum = ".".join(parts[-2:])
             if enum in RCLPY_ENUMS and (len(parts) == 2 or parts[-3] == "qos"):
                 return RCLPY_ENUMS[enum]
-            if head == "math" and rest in _MATH:
+            if head in ("math", *_NUMPY) and rest in _MATH:
                 return _MATH[rest]
             if head in ("os", "environ") and "environ" in name:
                 raise UntranslatableError(node, "a value read from the environment")
             if head in ("self", self.scope.class_name) and rest in self.scope.class_constants:
-                return self.value(self.scope.class_constants[rest])
+                return self.bound(self.scope.class_constants[rest])
+            space, _, attribute = name.rpartition(".")
+            if attribute in self.scope.namespaces.get(space, {}):
+                return self.bound(self.scope.namespaces[space][attribute])
             if head == "self" and "." not in rest:  # self.rate = 10.0 earlier in the method
-                assigned = _last_before(self.scope.local.get(name, []), node)
+                assigned = last_before(self.scope.local.get(name, []), node)
                 if isinstance(assigned, ast.Assign) and len(assigned.targets) == 1:
                     return self.value(assigned.value)
             if head == "self":
@@ -295,6 +281,27 @@ class Evaluator:
                 return {"float": float, "int": int, "str": str, "bool": bool}[function](argument)
             except (TypeError, ValueError):
                 pass
+        if last == _SHARE and len(node.args) == 1 and not node.keywords:
+            package = self.value(node.args[0])
+            if isinstance(package, str):
+                return SharePath(f"$(find-pkg-share {package})")
+        if function in ("os.path.join", "path.join", "join") and node.args:
+            parts = [self.value(a) for a in node.args]
+            if all(isinstance(p, str) for p in parts) and not node.keywords:
+                joined = os.path.join(*parts)
+                return SharePath(joined) if isinstance(parts[0], SharePath) else joined
+        if function == "len" and len(node.args) == 1:
+            sized = self.value(node.args[0])
+            if isinstance(sized, (list, tuple, str, dict)):
+                return len(sized)
+        computed = _FUNCTIONS.get(function.replace("numpy.", "math.").replace("np.", "math."))
+        if computed is not None and node.args and not node.keywords:
+            arguments = [self.value(a) for a in node.args]
+            if all(_is_number(a) for a in arguments):
+                try:
+                    return computed(*arguments)
+                except (ArithmeticError, TypeError, ValueError):
+                    pass
         if function in ("os.getenv", "getenv") or "environ" in function:
             raise UntranslatableError(node, "a value read from the environment")
         if last in ("get_parameter", "get_parameter_or", "get_parameters"):
@@ -343,8 +350,8 @@ class Evaluator:
         for name, argument in zip(names, call.args, strict=False):
             bound[name] = self.value(argument)
         for keyword in call.keywords:
-            assert keyword.arg is not None
-            bound[keyword.arg] = self.value(keyword.value)
+            if keyword.arg is not None:  # ``**kwargs`` was refused above
+                bound[keyword.arg] = self.value(keyword.value)
         outer = self.scope
         try:
             self.scope = replace(outer, loop={}, local={})
@@ -393,6 +400,48 @@ class Evaluator:
             raise UntranslatableError(node, f"the range {unparsed(node)!r}")
         return RangeValue(integer, values["from_value"], values["to_value"], values["step"])
 
+    def _parameter_read(self, node: ast.Attribute) -> Any:
+        """``x.get_parameter('n').value`` (or ``.get_parameter_value().double_value``) of a
+        parameter declared before, when the scope offers them: its value."""
+        call: ast.AST = node.value
+        if node.attr != "value":
+            inner = node.value
+            if not (
+                node.attr.endswith("_value")
+                and isinstance(inner, ast.Call)
+                and isinstance(inner.func, ast.Attribute)
+                and inner.func.attr == "get_parameter_value"
+            ):
+                return None
+            call = inner.func.value
+        if not (
+            self.scope.parameters
+            and isinstance(call, ast.Call)
+            and isinstance(call.func, ast.Attribute)
+            and call.func.attr == "get_parameter"
+            and len(call.args) == 1
+        ):
+            return None
+        name = self.value(call.args[0])
+        if not isinstance(name, str) or name not in self.scope.parameters:
+            return None
+        self.parameters_read.append(name)
+        value = self.scope.parameters[name]
+        return list(value) if isinstance(value, list) else value
+
+
+def _repeated(op: ast.operator, left: Any, right: Any) -> bool:
+    """``[0.0] * n`` (or ``n * [0.0]``) of a bounded length."""
+    if not isinstance(op, ast.Mult):
+        return False
+    items, count = (left, right) if isinstance(left, list) else (right, left)
+    return (
+        isinstance(items, list)
+        and isinstance(count, int)
+        and not isinstance(count, bool)
+        and 0 <= count * len(items) <= _MAX_ITEMS
+    )
+
 
 def _is_number(value: Any) -> bool:
     return isinstance(value, (int, float)) and not isinstance(value, bool)
@@ -409,18 +458,3 @@ def _same_kind(left: Any, right: Any) -> bool:
 def _too_large(op: ast.operator, left: Any, right: Any) -> bool:
     """A power whose result could exhaust memory or time (``10 ** 10 ** 9``) is not computed."""
     return isinstance(op, ast.Pow) and _is_number(right) and abs(right) > 64
-
-
-def _before(statement: ast.stmt, use: ast.AST) -> bool:
-    """Whether ``statement`` ends before ``use`` starts (``x = f(x)`` does not precede its
-    own ``x``)."""
-    end = (
-        getattr(statement, "end_lineno", None) or statement.lineno,
-        getattr(statement, "end_col_offset", None) or statement.col_offset,
-    )
-    return end <= (getattr(use, "lineno", 0), getattr(use, "col_offset", 0))
-
-
-def _last_before(statements: list[ast.stmt], use: ast.AST) -> ast.stmt | None:
-    earlier = [s for s in statements if _before(s, use)]
-    return earlier[-1] if earlier else None

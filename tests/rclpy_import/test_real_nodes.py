@@ -17,11 +17,11 @@ from rcl_interfaces.msg import ParameterDescriptor
 from rclpy.node import Node
 
 import genparams
+from genparams.importing import APPROXIMATE, EXACT, LEFT_OUT
 from genparams.outputs.schema_yaml import schema_yaml
-from genparams.rclpy_import.convert import APPROXIMATE, EXACT, LEFT_OUT
+from genparams.rclpy_import.found import Found
 from genparams.rclpy_import.node_file import ImportedNode, import_node
 from genparams.rclpy_import.patch import patched_source
-from genparams.rclpy_import.scan import Found
 from genparams.runtime.core.naming import NODE_PARAMETERS, class_name, module_name
 from tests.rclpy_import.cases import CASES, CLASSES, GOLDEN, NODES, Case
 from tests.support import RosHarness, import_file, load_generated
@@ -83,7 +83,7 @@ def _plain(value: Any) -> Any:
 
 def generated(node: ImportedNode, tmp_path: Path) -> types.ModuleType:
     schema = tmp_path / f"{node.imported.name}.yaml"
-    schema.write_text(schema_yaml(node.imported.data), encoding="utf-8")
+    schema.write_text(schema_yaml(dict(node.imported.data)), encoding="utf-8")
     return load_generated(schema, tmp_path)
 
 
@@ -121,14 +121,14 @@ FROM_ITEM = {"sensor_hub": ["sensors.front.frame_id", "sensors.rear.frame_id"]}
 
 def _outcome(result: ImportedNode, name: str) -> str:
     found = _found(result, name)
-    return next(o for f, o in result.imported.outcome if f is found)
+    return next(o.fate for o in result.imported.declared if o.found is found)
 
 
 def _found(result: ImportedNode, name: str) -> Found:
     """The declaration of ``name``: by its own name, as an item of a per-item parameter
     (``offsets`` holds ``offsets.shoulder``, ``*`` the top level's), or as a parameter of
     a mapped group's entry (``gains.*.p`` holds ``gains.shoulder.p``)."""
-    keys = {key: f for f, _ in result.imported.outcome if (key := result.imported.keys.get(id(f)))}
+    keys = {o.key: o.found for o in result.imported.declared if o.key and o.found}
     if name in keys:
         return keys[name]
     parts = name.split(".")
@@ -141,7 +141,7 @@ def _found(result: ImportedNode, name: str) -> Found:
 
 
 def test_every_case_is_counted() -> None:
-    counts = {c.name: [o for _, o in imported(c).imported.outcome] for c in CASES}
+    counts = {c.name: [o.fate for o in imported(c).imported.declared] for c in CASES}
     tallies = {n: (o.count(EXACT), o.count(APPROXIMATE), o.count(LEFT_OUT)) for n, o in
                counts.items()}  # fmt: skip
     assert tallies == {
@@ -164,7 +164,9 @@ def test_patched_node_declares_what_the_hand_written_one_did(
     result = imported(case)
     hand = declared(hand_written(ros, case, import_file(NODES / case.file)))
     module = module_name(result.imported.name)
-    text = genparams.generate(f"{result.imported.name}.yaml", schema_yaml(result.imported.data))
+    text = genparams.generate(
+        f"{result.imported.name}.yaml", schema_yaml(dict(result.imported.data))
+    )
     (tmp_path / f"{module}.py").write_text(text, encoding="utf-8")
     patched = tmp_path / case.file
     patched.write_text(patched_source(result, str(NODES / case.file)), encoding="utf-8")

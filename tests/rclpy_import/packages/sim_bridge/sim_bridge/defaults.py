@@ -1,0 +1,2 @@
+RATE_HZ = 30.0
+TOPICS = ["/clock", "/tf"]

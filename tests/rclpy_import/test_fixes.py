@@ -1,0 +1,140 @@
+"""import-rclpy on shapes that were mishandled: a script's ``__main__`` block, a
+declare_parameters list imported in part, a node of which nothing imports, the
+messages of a per-item parameter, names holding ``/``."""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+import yaml
+
+from genparams.cli import main
+
+
+def run(capsys: pytest.CaptureFixture[str], *args: str) -> tuple[int, str, str]:
+    code = main(["import-rclpy", *args])
+    captured = capsys.readouterr()
+    return code, captured.out, captured.err
+
+
+def test_declarations_under_the_main_guard_run(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = tmp_path / "script.py"
+    source.write_text(
+        "import rclpy\nfrom rclpy.node import Node\n\n"
+        'if __name__ == "__main__":\n'
+        "    rclpy.init()\n"
+        '    node = Node("script")\n'
+        "    rate = 5.0\n"
+        '    node.declare_parameter("rate", rate)\n'
+        '    if node.get_parameter("rate").value > 1.0:\n'
+        '        node.declare_parameter("fast", True)\n',
+        encoding="utf-8",
+    )
+    code, out, err = run(capsys, str(source))
+    parameters = yaml.safe_load(out)["parameters"]
+    assert parameters["rate"] == {"type": "double", "default": 5.0}
+    assert "fast" not in parameters  # a condition inside the block stays one
+    assert code == 1 and "declared only under a condition" in err
+
+
+def test_a_list_imported_in_part_is_patched(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    source = tmp_path / "lists.py"
+    source.write_text(
+        "class Lists:\n"
+        "    def __init__(self):\n"
+        "        self.declare_parameters(\n"
+        '            "",\n'
+        "            [\n"
+        '                ("rate", 10.0),\n'
+        '                ("bad-name", 1),\n'
+        '                ("mode", "x"),\n'
+        "            ],\n"
+        "        )\n",
+        encoding="utf-8",
+    )
+    monkeypatch.chdir(tmp_path)
+    code, diff, err = run(capsys, "lists.py", "--patch")
+    assert code == 1 and "the patch changes nothing" not in err
+    assert '-                ("rate", 10.0),\n' in diff
+    assert '-                ("mode", "x"),\n' in diff
+    assert "+        self.params = ListsParams.declare(self)\n" in diff
+    if shutil.which("patch"):
+        subprocess.run(["patch", "-p0", "--quiet"], input=diff, text=True, check=True)
+        patched = source.read_text("utf-8")
+        assert '("bad-name", 1)' in patched and '("rate", 10.0)' not in patched
+
+
+def test_a_patch_that_changes_nothing_says_why(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    source = tmp_path / "loop.py"
+    source.write_text(
+        "class Loop:\n"
+        "    def __init__(self):\n"
+        "        for n in ['a', 'bad-name']:\n"
+        "            self.declare_parameter(n, 1)\n"
+        "        self.declare_parameter('c', float(input()))\n",
+        encoding="utf-8",
+    )
+    monkeypatch.chdir(tmp_path)
+    code, diff, err = run(capsys, "loop.py", "--patch")
+    assert code == 2 and diff == ""
+    assert "no parameter could be imported: nothing written" in err
+
+
+def test_nothing_imported_is_bad_input_and_writes_nothing(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = tmp_path / "computed.py"
+    source.write_text(
+        "class Computed:\n    def __init__(self):\n"
+        "        self.declare_parameter('home', os.environ['HOME'])\n",
+        encoding="utf-8",
+    )
+    out_file = tmp_path / "computed.yaml"
+    code, out, err = run(capsys, str(source), "-o", str(out_file))
+    assert (code, out, out_file.exists()) == (2, "", False)
+    assert "imported 0 of 1 parameters" in err
+
+
+def test_a_per_item_warning_names_the_parameter_as_written(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = tmp_path / "items.py"
+    source.write_text(
+        "class Items:\n    def __init__(self):\n"
+        "        self.declare_parameter('on', True)\n"
+        "        self.declare_parameter('joints', ['a'])\n"
+        "        if self.get_parameter('on').value == True:\n"
+        "            for joint in self.get_parameter('joints').value:\n"
+        "                self.declare_parameter(joint, 1)\n"
+        "                self.declare_parameter(f'offsets.{joint}', 1)\n",
+        encoding="utf-8",
+    )
+    code, _, err = run(capsys, str(source))
+    assert code == 1
+    assert ":7:40: {joint}: warning: " in err
+    assert ":8:40: offsets.{joint}: warning: " in err
+    assert ": *: " not in err
+
+
+def test_a_name_holding_a_slash_is_left_out_with_its_reason(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = tmp_path / "slash.py"
+    source.write_text(
+        "class Slash:\n    def __init__(self):\n"
+        "        self.declare_parameter('input_shape/height', 480)\n"
+        "        self.declare_parameter('rate', 1.0)\n",
+        encoding="utf-8",
+    )
+    code, out, err = run(capsys, str(source))
+    assert code == 1 and "input_shape" not in out
+    assert "input_shape/height: warning: a name holding '/': rclpy accepts it" in err

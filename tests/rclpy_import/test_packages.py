@@ -1,0 +1,144 @@
+"""import-rclpy reads a node as its package: a driver object declaring on the node, a base
+class wrapping declare_parameter, helpers declaring what they are asked, a node taking its
+parameters from its params file. Each package's node runs on a real node; the class
+generated from the imported schema must declare the same parameters, value by value."""
+
+from __future__ import annotations
+
+import importlib
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import pytest
+import yaml
+
+from genparams.cli import main
+from genparams.runtime.core.naming import class_name
+from tests.rclpy_import.test_real_nodes import declared
+from tests.support import RosHarness, load_generated
+
+PACKAGES = Path(__file__).resolve().parent / "packages"
+
+
+@dataclass(frozen=True)
+class PackageCase:
+    package: str  # folder under PACKAGES
+    module: str  # the node's module, as the package imports it
+    cls: str
+    code: int  # the import's exit code
+    params: str | None = None  # a params file in the package folder
+    files: tuple[str, ...] = ()  # the other files the import must name as read
+
+    @property
+    def node_file(self) -> Path:
+        return PACKAGES / self.package / (self.module.replace(".", "/") + ".py")
+
+    @property
+    def ros_args(self) -> list[str]:
+        return ["--params-file", str(PACKAGES / self.package / self.params)] if self.params else []
+
+
+CASES = [
+    PackageCase(
+        "gps_reader", "gps_reader.gps_node", "GpsNode", 0,
+        files=("gps_reader/serial_link.py", "gps_reader/limits.py"),
+    ),
+    PackageCase("arm_state", "arm_state.arm_state_node", "ArmStateNode", 0,
+                files=("arm_state/params.py",)),
+    PackageCase("pad_teleop", "pad_teleop.pad_teleop_node", "PadTeleop", 0,
+                params="pad_teleop.params.yaml"),
+]  # fmt: skip
+
+
+def imported(case: PackageCase, capsys: pytest.CaptureFixture[str], out: Path) -> str:
+    params = ["--params-file", str(PACKAGES / case.package / case.params)] if case.params else []
+    code = main(["import-rclpy", str(case.node_file), *params, "-o", str(out)])
+    err = capsys.readouterr().err
+    assert code == case.code, err
+    return err
+
+
+@pytest.mark.parametrize("case", CASES, ids=lambda c: c.package)
+def test_the_package_s_node_declares_what_the_generated_class_declares(
+    case: PackageCase,
+    ros: RosHarness,
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    schema = tmp_path / f"{case.package}.yaml"
+    err = imported(case, capsys, schema)
+    for file in case.files:
+        assert file in err.split("never run: ")[1].splitlines()[0]
+    monkeypatch.syspath_prepend(str(PACKAGES / case.package))
+    for name in [m for m in sys.modules if m.split(".")[0] == case.package]:
+        monkeypatch.delitem(sys.modules, name)
+    node_class: Any = getattr(importlib.import_module(case.module), case.cls)
+    cli_args = ["--ros-args", *case.ros_args] if case.params else None
+    hand = declared(ros.add_node(node_class(context=ros.context, cli_args=cli_args)))
+    generated = load_generated(schema, tmp_path)
+    name = yaml.safe_load(schema.read_text("utf-8"))["name"]
+    params_class = getattr(generated, class_name(name))
+    fresh = ros.node(hand_name(ros), args=case.ros_args)
+    params_class.declare(fresh)
+    assert declared(fresh) == hand
+
+
+def hand_name(ros: RosHarness) -> str:
+    """The name of the node just built: a params file's section names it."""
+    return ros.nodes[-1].get_name()
+
+
+def test_a_base_class_helper_share_paths_and_computed_defaults(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    node = PACKAGES / "sim_bridge" / "sim_bridge" / "bridge_node.py"
+    out = tmp_path / "bridge.yaml"
+    monkeypatch.chdir(node.parent)
+    code = main(["import-rclpy", node.name, "-o", str(out)])
+    err = capsys.readouterr().err
+    assert code == 1
+    parameters = yaml.safe_load(out.read_text("utf-8"))["parameters"]
+    assert parameters["use_sim_time_offset"] == {"type": "double", "default": 0.0}  # the base's
+    assert parameters["rate"] == {"type": "double", "default": 30.0}  # a constant imported
+    assert parameters["topics"] == {"type": "string_array", "default": ["/clock", "/tf"]}
+    assert parameters["world"] == {"type": "string", "default": "empty"}  # literal loop
+    assert parameters["config_file"] == {
+        "type": "string", "default": "$(find-pkg-share sim_bridge)/config/bridge.yaml"
+    }  # fmt: skip
+    assert "config_file: note: a path in a package's share directory" in err
+    assert parameters["gains"] == {"type": "double_array", "default": [55.0, 55.0]}
+    assert "gains: note: a default computed from the parameter(s) 'joints'" in err
+    assert "input_shape/height: warning: a name holding '/'" in err
+    assert "sim_bridge/compat.py" in err and "sim_bridge/defaults.py" in err
+    assert err.endswith("imported 8 of 9 parameters (2 approximately); 1 left out (see warnings)\n")
+    code = main(["import-rclpy", node.name, "--patch"])
+    captured = capsys.readouterr()
+    assert (code, captured.out) == (1, "")
+    assert "the base class CompatNode declares imported parameters" in captured.err
+    assert "compat.py:16:32: use_sim_time_offset: note: declared by the base class" in err
+
+
+def test_files_outside_the_package_are_never_read(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    outside = tmp_path / "constants.py"
+    outside.write_text("RATE = 5.0\n", encoding="utf-8")
+    package = tmp_path / "pkg"
+    package.mkdir()
+    (package / "package.xml").write_text("<package/>\n", encoding="utf-8")
+    (package / "node.py").write_text(
+        "from ..constants import RATE\nfrom .missing import GAIN\n"
+        "class N:\n    def __init__(self):\n"
+        "        self.declare_parameter('rate', RATE)\n"
+        "        self.declare_parameter('gain', GAIN)\n"
+        "        self.declare_parameter('ok', 1)\n",
+        encoding="utf-8",
+    )
+    code = main(["import-rclpy", str(package / "node.py")])
+    err = capsys.readouterr().err
+    assert code == 1 and "never run" not in err
+    assert "rate: warning: value computed at run time (the variable 'RATE')" in err
+    assert "gain: warning: value computed at run time (the variable 'GAIN')" in err
