@@ -43,7 +43,12 @@ def check_deployment(
     nodes = configured_nodes(deployed, document)
     for node, item in nodes:
         report = check_files(
-            item.bounds, [document], [node], (*known, *item.entry.known), near_misses=False
+            item.bounds,
+            [document],
+            [node],
+            (*known, *item.entry.known),
+            near_misses=False,
+            sections_needed=False,
         )
         problems.update(report.problems)
         warnings.update(report.warnings)
