@@ -14,6 +14,7 @@ NO_SCHEMA = "no-schema"
 UNREACHABLE = "unreachable"  # published a schema but its services did not answer: exit 1
 BAD_SCHEMA = "bad-schema"  # a schema message that cannot be read, or not the node's own: exit 1
 NOT_CHECKED = "not-checked"  # a custom validator that cannot be imported here
+RULE_ACROSS_NODES = "rule-across-nodes"  # a deployment rule the nodes' values break: exit 1
 
 
 @dataclass(frozen=True)
@@ -27,7 +28,7 @@ class Finding:
 
     @property
     def failing(self) -> bool:
-        return self.kind in (VIOLATION, UNREACHABLE, BAD_SCHEMA)
+        return self.kind in (VIOLATION, UNREACHABLE, BAD_SCHEMA, RULE_ACROSS_NODES)
 
     # A finding is a problem (genparams.errors.Problem): the node, the parameter, its kind.
     @property

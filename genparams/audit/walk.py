@@ -24,6 +24,7 @@ class AuditResult:
     findings: list[Finding] = field(default_factory=list)
     audited: list[str] = field(default_factory=list)  # nodes that publish a schema
     plain: list[str] = field(default_factory=list)  # nodes that do not
+    values: dict[str, dict[str, Any]] = field(default_factory=dict)  # by node, what was read
     seconds: float = 0.0
 
     @property
@@ -102,7 +103,9 @@ def audit(
     settle: float = 1.0,
     timeout: float = 5.0,
     trusted_packages: Sequence[str] = (),
+    read_every: bool = False,
 ) -> AuditResult:
+    """``read_every``: read the values of nodes without a schema too (rules across nodes)."""
     started = time.monotonic()
     result = AuditResult()
     names = settled_nodes(graph, settle, timeout, only)
@@ -124,7 +127,7 @@ def audit(
         else:
             result.audited.append(name)
             schemas[name] = schema
-        if schema is not None or documents:
+        if schema is not None or documents or read_every:
             to_read.append(name)
     for start in range(0, len(to_read), BATCH):
         for name, values in read_batch(graph, to_read[start : start + BATCH], timeout, result):
@@ -132,5 +135,6 @@ def audit(
             if schema is not None:
                 result.findings.extend(check_node(name, schema, values, trusted_packages))
             result.findings.extend(file_drift(name, documents, values))
+            result.values[name] = values
     result.seconds = time.monotonic() - started
     return result

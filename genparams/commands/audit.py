@@ -7,6 +7,7 @@ import sys
 from pathlib import Path
 
 from genparams.errors import CommandError
+from genparams.paramsfile.node_rules import NodeRule
 from genparams.paramsfile.ros_yaml import absolute, node_name_problem
 
 
@@ -31,6 +32,12 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
         metavar="PACKAGE",
         help="run the custom validators of PACKAGE (or module, and its submodules) that schema"
         " messages name; others are reported not-checked (repeatable)",
+    )
+    parser.add_argument(
+        "--manifest",
+        type=Path,
+        metavar="FILE",
+        help="a deployment manifest: its rules across nodes are checked on the running graph",
     )
     parser.add_argument("--format", choices=("text", "json"), default="text")
     parser.add_argument(
@@ -64,6 +71,7 @@ def run(args: argparse.Namespace) -> int:
         documents = read_deployment(args.params_file)
     except DeploymentError as exc:  # its problems name their file and place
         raise CommandError(exc) from None
+    rules = _rules(args.manifest)
     graph = Graph("genparams_audit")
     try:
         only = tuple(absolute(n) for n in args.nodes)
@@ -74,8 +82,25 @@ def run(args: argparse.Namespace) -> int:
             settle=args.settle,
             timeout=args.timeout,
             trusted_packages=tuple(args.trust_package),
+            read_every=bool(rules),
         )
     finally:
         graph.close()
+    if rules:
+        from genparams.audit.node_rules import rule_findings
+
+        result.findings.extend(rule_findings(rules, result.values))
     sys.stdout.write(json_report(result) if args.format == "json" else text_report(result))
     return 1 if result.failing else 0
+
+
+def _rules(manifest: Path | None) -> tuple[NodeRule, ...]:
+    if manifest is None:
+        return ()
+    from genparams.paramsfile.manifest import read_manifest
+    from genparams.schema.errors import SchemaError
+
+    try:
+        return read_manifest(manifest).rules
+    except SchemaError as exc:
+        raise CommandError(exc) from None

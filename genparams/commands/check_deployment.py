@@ -11,6 +11,7 @@ from genparams.errors import CommandError
 from genparams.paramsfile.check_params import Bound
 from genparams.paramsfile.deployment import Deployed, check_deployment
 from genparams.paramsfile.manifest import Manifest, NodeEntry, parse_map, read_manifest
+from genparams.paramsfile.node_rules import NodeRule
 from genparams.paramsfile.params_reader import read_params_file
 from genparams.runtime.core.visible import visible
 from genparams.schema.errors import SchemaError
@@ -51,7 +52,9 @@ def run(args: argparse.Namespace) -> int:
             unreadable.append(exc)
             continue
         document = read_params_file(text, str(params))
-        report, checked = check_deployment(deployed, document, (*manifest.known, *args.known))
+        report, checked = check_deployment(
+            deployed, document, (*manifest.known, *args.known), manifest.rules
+        )
         for line in (*report.problems, *report.warnings):
             print(line)
         if args.verbose:
@@ -67,6 +70,7 @@ def run(args: argparse.Namespace) -> int:
 def _manifest(args: argparse.Namespace) -> Manifest:
     entries: list[NodeEntry] = []
     known: tuple[str, ...] = ()
+    rules: tuple[NodeRule, ...] = ()
     if args.manifest is not None:
         try:
             manifest = read_manifest(args.manifest)
@@ -74,6 +78,7 @@ def _manifest(args: argparse.Namespace) -> Manifest:
             raise CommandError(exc) from None
         entries.extend(manifest.nodes)
         known = manifest.known
+        rules = manifest.rules
     for text in args.map:
         try:
             entries.append(parse_map(text))
@@ -81,7 +86,7 @@ def _manifest(args: argparse.Namespace) -> Manifest:
             raise CommandError(f"genparams check-deployment: --map: {exc}") from None
     if not entries:
         raise CommandError("genparams check-deployment: give --manifest FILE or --map NODE=SCHEMA")
-    return Manifest(tuple(entries), known)
+    return Manifest(tuple(entries), known, rules)
 
 
 def deployed_schemas(manifest: Manifest) -> list[Deployed]:

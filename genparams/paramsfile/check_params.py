@@ -20,13 +20,14 @@ from genparams.paramsfile.params_reader import ParamEntry, ParamsDocument, Secti
 from genparams.paramsfile.ros_yaml import ros_type_name
 from genparams.paramsfile.section_checker import SectionChecker
 from genparams.runtime.core.naming import join_prefix
-from genparams.runtime.core.suggest import did_you_mean_name
+from genparams.runtime.core.suggest import closest, did_you_mean_name
 from genparams.schema.errors import Location, SchemaProblem
 from genparams.schema.model import Schema
 
 # Parameters rclpy declares on every node, by type; and a namespace it owns.
 BUILTIN_PARAMETERS = {"use_sim_time": "bool", "start_type_description_service": "bool"}
 BUILTIN_PREFIXES = ("qos_overrides.",)
+ALL_NODES = "/**"  # the section every node takes
 
 
 @dataclass(frozen=True)
@@ -66,18 +67,25 @@ def check_files(
     known: Sequence[str] = (),
     *,
     near_misses: bool = True,
+    sections_needed: bool = True,
 ) -> Report:
     """Check params files given in this order (as rcl gets them) for ``nodes``.
 
     A skipped section that looks meant for one of ``nodes`` (a typo in its name
     or namespace) is a warning, unless ``near_misses`` is False (the caller
-    reports unclaimed sections itself).
+    reports unclaimed sections itself). A node that no section reaches is a
+    problem, unless ``sections_needed`` is False: a check of nothing would pass.
     """
     problems: list[SchemaProblem] = [p for d in documents for p in d.problems]
     files = [d.sections for d in documents]
     applied, per_node, skipped, warnings = _node_sections(files, nodes)
     if not near_misses:
         warnings = []
+    if sections_needed and nodes and not any(d.problems and not d.sections for d in documents):
+        unnamed = _unnamed(documents, per_node)
+        problems.extend(_unreached(documents, unnamed))
+        # A node no section reaches: a list of its required parameters adds only noise.
+        per_node = [(n, s) for n, s in per_node if s]
     if any(d.problems and not d.sections for d in documents):
         per_node = []  # nothing could be read: a list of every required parameter adds only noise
     file = documents[0].file if documents else "-"
@@ -132,6 +140,41 @@ def _node_sections(
                 SchemaProblem(section.node_location, section.node, f"skipped: {reason}")
             )
     return union, per_node, skipped_lines, near
+
+
+def _unnamed(
+    documents: Sequence[ParamsDocument], per_node: Sequence[tuple[str, Sequence[Section]]]
+) -> list[str]:
+    """The nodes no section names, in files that name nodes: only ``/**`` (or nothing)
+    reaches them, so the sections meant for them, if any, went elsewhere."""
+    if all(s.node == ALL_NODES for d in documents for s in d.sections):
+        return [node for node, applied in per_node if not applied]
+    return [node for node, applied in per_node if all(s.node == ALL_NODES for s in applied)]
+
+
+def _unreached(documents: Sequence[ParamsDocument], nodes: Sequence[str]) -> list[SchemaProblem]:
+    """A problem at the top of the first file for each node that no section names."""
+    seen = list(dict.fromkeys(s.node for d in documents for s in d.sections))
+    where = Location(documents[0].file if documents else "-", 1, 1)
+    listed = ", ".join(seen) if seen else "none"
+    return [
+        SchemaProblem(
+            where,
+            node,
+            f"no section of the file names this node, so nothing checks it; sections seen: "
+            f"{listed}{_closest_section(node, [s for s in seen if s != ALL_NODES])}",
+        )
+        for node in nodes
+    ]
+
+
+def _closest_section(node: str, sections: Sequence[str]) -> str:
+    """`` (did you mean /robot/cam?)``: the section with the node's own name in another
+    namespace when there is one such section, else the closest name, else ""."""
+    name = node.rsplit("/", 1)[-1]
+    same_name = [s for s in sections if s.rsplit("/", 1)[-1] == name]
+    found = same_name[0] if len(same_name) == 1 else closest(node, sections)
+    return f" (did you mean {found}?)" if found is not None else ""
 
 
 def own_sections(sections: Sequence[Section], prefix: str) -> list[Section]:

@@ -15,7 +15,9 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from genparams.paramsfile.check_params import Bound, Report, check_files
+from genparams.paramsfile.explain import explain
 from genparams.paramsfile.manifest import NodeEntry
+from genparams.paramsfile.node_rules import NodeRule, NodeValue, check_rules
 from genparams.paramsfile.node_sections import near_miss
 from genparams.paramsfile.params_reader import ParamsDocument
 from genparams.paramsfile.ros_yaml import node_matches
@@ -33,17 +35,30 @@ class Deployed:
     bounds: tuple[Bound, ...]
 
 
+# What rclpy gives every node that nothing sets: a rule across nodes compares these too.
+BUILTIN_DEFAULTS = {"use_sim_time": False, "start_type_description_service": True}
+
+
 def check_deployment(
-    deployed: Sequence[Deployed], document: ParamsDocument, known: Sequence[str] = ()
+    deployed: Sequence[Deployed],
+    document: ParamsDocument,
+    known: Sequence[str] = (),
+    rules: Sequence[NodeRule] = (),
 ) -> tuple[Report, list[str]]:
-    """Every node of ``document`` checked against its schemas; and which node got which check."""
+    """Every node of ``document`` checked against its schemas, and the rules across nodes
+    against their effective values; and which node got which check."""
     problems: set[SchemaProblem] = set(document.problems)
     warnings: set[SchemaProblem] = set()
     checked: list[str] = []
     nodes = configured_nodes(deployed, document)
     for node, item in nodes:
         report = check_files(
-            item.bounds, [document], [node], (*known, *item.entry.known), near_misses=False
+            item.bounds,
+            [document],
+            [node],
+            (*known, *item.entry.known),
+            near_misses=False,
+            sections_needed=False,
         )
         problems.update(report.problems)
         warnings.update(report.warnings)
@@ -55,6 +70,14 @@ def check_deployment(
         )
         checked.append(f"{node}: checked against {schemas} (manifest entry {item.entry.node})")
     names = [node for node, _ in nodes]
+    if rules:
+        values = {
+            node: effective_values(item.bounds if item else (), [document], node, known)
+            for node, item in rule_nodes(nodes, document)
+        }
+        results = check_rules(rules, values)
+        problems.update(results.problems)
+        checked.extend(str(note) for note in results.notes)
     for section in document.sections:
         if any(node_matches(section.node, node) for node in names):
             continue
@@ -94,6 +117,33 @@ def configured_nodes(
         for node in concrete or ([pattern] if reached else []):
             found.setdefault(node, item)
     return list(found.items())
+
+
+def rule_nodes(
+    nodes: Sequence[tuple[str, Deployed]], document: ParamsDocument
+) -> list[tuple[str, Deployed | None]]:
+    """The nodes rules across nodes compare: the manifest's nodes of this file, and every
+    other node a section names in full (its values untyped)."""
+    found: dict[str, Deployed | None] = dict(nodes)
+    for section in document.sections:
+        if not _is_pattern(section.node):
+            found.setdefault(section.node, None)
+    return list(found.items())
+
+
+def effective_values(
+    bounds: Sequence[Bound], documents: Sequence[ParamsDocument], node: str, known: Sequence[str]
+) -> dict[str, NodeValue]:
+    """What ``node`` starts with, as explain traces it, and rclpy's own defaults."""
+    explanation = explain(bounds, documents, node, known)
+    values = {
+        row.name: NodeValue(row.value, row.source.text)
+        for row in explanation.rows
+        if row.source is not None and row.value is not None
+    }
+    for name, value in BUILTIN_DEFAULTS.items():
+        values.setdefault(name, NodeValue(value, "rclpy's default"))
+    return values
 
 
 def _is_pattern(name: str) -> bool:

@@ -152,7 +152,7 @@ def explain(
             row.owner = _owner(row.name, known) if bounds else "unchecked"
     if not bounds:
         known = ["*"]  # no schema: nothing to call unknown, only what rcl refuses
-    report = check_files(bounds, documents, [node], known, near_misses=False)
+    report = check_files(bounds, documents, [node], known, near_misses=False, sections_needed=False)
     return Explanation(
         node,
         tuple(rows.values()),

@@ -13,6 +13,9 @@ nodes:
     schemas:
       - steering_library.yaml
       - {schema: odometry.yaml, prefix: odom}    # another class, under a prefix
+rules:                             # across nodes (node_rules)
+  - {name: one_clock, same: use_sim_time}
+  - {name: same_base, check: /front_steering.wheel_base == /odometry.wheel_base}
 ```
 The same mapping can be given on the command line (``--map NODE=SCHEMA[@PREFIX][,...]``).
 """
@@ -23,9 +26,10 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from genparams.paramsfile.node_rules import NodeRule, read_rules
 from genparams.paramsfile.ros_yaml import absolute, node_pattern_problem
 from genparams.runtime.core.naming import is_ros_token
-from genparams.schema.errors import SchemaError, SchemaProblem
+from genparams.schema.errors import Location, SchemaError, SchemaProblem
 from genparams.schema.input_file import read_input_file
 from genparams.schema.loader import LoadedDocument, load_yaml
 from genparams.schema.loader import Path as KeyPath
@@ -50,6 +54,7 @@ class NodeEntry:
 class Manifest:
     nodes: tuple[NodeEntry, ...]
     known: tuple[str, ...]  # for every node
+    rules: tuple[NodeRule, ...] = ()  # across nodes (node_rules)
 
 
 def read_manifest(path: Path) -> Manifest:
@@ -101,14 +106,20 @@ class _Reader:
         if data.get(FORMAT_KEY) != 1:
             self.problem((FORMAT_KEY,), f"write {FORMAT_KEY}: 1 (the format version)")
         for key in data:
-            if key not in (FORMAT_KEY, "known", "nodes"):
-                self.problem((key,), f"unknown key {key!r} (known: known, nodes)", key=True)
+            if key not in (FORMAT_KEY, "known", "nodes", "rules"):
+                self.problem((key,), f"unknown key {key!r} (known: known, nodes, rules)", key=True)
         nodes = data.get("nodes")
         if not isinstance(nodes, dict) or not nodes:
             self.problem(("nodes",), "nodes: a mapping of node names to their schemas")
             nodes = {}
         entries = tuple(self.node(str(name), value) for name, value in nodes.items())
-        return Manifest(entries, self.names(("known",), data.get("known", [])))
+        rules, problems = read_rules(data.get("rules", []), self.location)
+        self.problems.extend(problems)
+        return Manifest(entries, self.names(("known",), data.get("known", [])), rules)
+
+    def location(self, path: tuple[object, ...], key: bool) -> Location:
+        keys: KeyPath = tuple(p for p in path if isinstance(p, str | int))
+        return self.document.key_location(keys) if key else self.document.value_location(keys)
 
     def node(self, name: str, value: Any) -> NodeEntry:
         path: KeyPath = ("nodes", name)

@@ -33,7 +33,7 @@ MISTAKES = {
         "genparams_deployment: 1\nknown: [use_sim_time]\nnodez: {}\n",
         [
             "1:1: nodes: nodes: a mapping of node names to their schemas",
-            "3:1: nodez: unknown key 'nodez' (known: known, nodes)",
+            "3:1: nodez: unknown key 'nodez' (known: known, nodes, rules)",
         ],
     ),
     "known_not_a_list": (
