@@ -10,7 +10,8 @@ Left to the machine, not run: the `ros2` lines (ros2cli comes with a ROS 2 insta
 which the test machine has not), the install lines (the test runs in the development
 venv, which holds what they install; tests/integration/test_packaging.py installs the
 wheel into a fresh venv) and the line exporting the DDS domain (the suite gives each run
-its own). `genparams tune` runs until the page is served, then is stopped.
+its own). `genparams tune` runs until the page is served, then is stopped. What the page
+says of the `ros2` lines is checked on the built node over the same parameter services.
 """
 
 from __future__ import annotations
@@ -23,9 +24,11 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
+from rclpy.parameter import Parameter
 
-from tests.build_support import tool_env
+from tests.build_support import node_process, tool_env, wait_for_node
 from tests.docs_site.pages import DOCS, Block, blocks, shell_lines
+from tests.support import RosHarness, unique_name
 
 pytestmark = [pytest.mark.docs, pytest.mark.slow]
 
@@ -116,7 +119,7 @@ def test_the_page_is_read_as_expected() -> None:
     assert any(_TUNE.match(line) for line in commands)
 
 
-def test_the_page_runs_from_an_empty_folder(tmp_path: Path) -> None:
+def test_the_page_runs_from_an_empty_folder(tmp_path: Path, ros: RosHarness) -> None:
     # No space in this path: colcon's install/setup.sh breaks on one (docs/getting-started.md).
     top = tmp_path / "empty"
     top.mkdir()
@@ -143,3 +146,22 @@ def test_the_page_runs_from_an_empty_folder(tmp_path: Path) -> None:
     assert (top / "ws" / "src" / "rover" / "rover_driver.md").read_text().count("speed.max") >= 1
     assert not (top / "ws" / "src" / "rover" / "rover" / "rover_driver_params.py").exists()
     assert os.listdir(top) == ["ws"]
+
+    # `ros2 run rover rover_driver`, then what the page says `ros2 param` shows.
+    workspace = top / "ws"
+    name = unique_name("rover_driver")
+    remap = ["-r", f"__node:={name}", "--params-file", "src/rover/config/rover.params.yaml"]
+    with node_process(workspace, "install/rover/lib/rover/rover_driver", *remap) as process:
+        client = wait_for_node(ros, process, f"/{name}")
+        (described,) = client.describe("speed.max")
+        assert described.description.startswith("Fastest speed the driver commands.")
+        assert (
+            described.floating_point_range[0].from_value,
+            described.floating_point_range[0].to_value,
+        ) == (0.0, 3.0)
+        assert client.set(Parameter("speed.max", value=2.5))[0].successful
+        (refused,) = client.set(Parameter("speed.max", value=7.0))
+        assert not refused.successful
+        # rclpy's own range check words it, before genparams' (the same rule).
+        assert "speed.max" in refused.reason and "out of range" in refused.reason, refused.reason
+        assert client.get("speed.max") == [2.5]
