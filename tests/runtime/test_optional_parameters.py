@@ -92,6 +92,8 @@ def test_a_set_of_the_declared_type_gives_a_value_once_and_for_good(
         else:
             assert wrong.reason.startswith("Wrong parameter type")
         assert not again.successful  # set once, it cannot go back to "not set"
+        if target is node:
+            assert again.reason == "frame_id: cannot be undeclared"
         assert client.get("frame_id") == ["map"]
     assert cfg.frame_id == "map"
     assert seen == [("frame_id", None, "map")]
