@@ -133,17 +133,19 @@ class Graph:
         """The nodes in the graph, each once; without ``hidden``, none whose name starts with _."""
         return sorted(n for n in self.counted_names() if hidden or not is_hidden(n))
 
-    def claimants(self, node_name: str) -> int:
-        """How many nodes in the graph have the name ``node_name``."""
-        return self.counted_names()[node_name]
-
-    def present(self, node_name: str) -> bool:
-        """Whether ``node_name`` is in the graph, from a listing at most a moment old."""
+    def recent_names(self) -> Counter[str]:
+        """:meth:`counted_names`, from a listing at most ``NAMES_FRESH_SECONDS`` old."""
         with self.lock:
             when, names = self.listing
-        if time.monotonic() - when > NAMES_FRESH_SECONDS or node_name not in names:
-            names = self.counted_names()
-        return node_name in names
+        return names if time.monotonic() - when <= NAMES_FRESH_SECONDS else self.counted_names()
+
+    def claimants(self, node_name: str) -> int:
+        """How many nodes in the graph have the name ``node_name``."""
+        return self.recent_names()[node_name]
+
+    def present(self, node_name: str) -> bool:
+        """Whether ``node_name`` is in the graph (a name not in a recent listing: asked again)."""
+        return node_name in self.recent_names() or node_name in self.counted_names()
 
     def watch_schema_topics(self) -> None:
         self.topics.watch()
