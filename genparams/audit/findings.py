@@ -15,6 +15,31 @@ UNREACHABLE = "unreachable"  # published a schema but its services did not answe
 BAD_SCHEMA = "bad-schema"  # a schema message that cannot be read, or not the node's own: exit 1
 NOT_CHECKED = "not-checked"  # a custom validator that cannot be imported here
 RULE_ACROSS_NODES = "rule-across-nodes"  # a deployment rule the nodes' values break: exit 1
+BAD_ANSWER = "bad-answer"  # its parameter services answered what cannot be used: exit 1
+DUPLICATE_NAME = "duplicate-name"  # more than one node has the name: exit 1
+KINDS = (
+    VIOLATION,
+    DRIFT_DEFAULT,
+    DRIFT_FILE,
+    NO_SCHEMA,
+    UNREACHABLE,
+    BAD_SCHEMA,
+    BAD_ANSWER,
+    DUPLICATE_NAME,
+    NOT_CHECKED,
+    RULE_ACROSS_NODES,
+)
+FAILING = frozenset({VIOLATION, UNREACHABLE, BAD_SCHEMA, BAD_ANSWER, DUPLICATE_NAME, RULE_ACROSS_NODES})
+
+
+def plain(value: Any) -> Any:
+    """A value as one spelling shows it: every sequence a list (a schema default is a tuple,
+    a value read from a node a list), bytes as a list of ints."""
+    if isinstance(value, bytes):
+        return list(value)
+    if isinstance(value, list | tuple):
+        return [plain(item) for item in value]
+    return value
 
 
 @dataclass(frozen=True)
@@ -26,9 +51,18 @@ class Finding:
     expected: Any = None
     actual: Any = None
 
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "expected", plain(self.expected))
+        object.__setattr__(self, "actual", plain(self.actual))
+
     @property
     def failing(self) -> bool:
-        return self.kind in (VIOLATION, UNREACHABLE, BAD_SCHEMA, RULE_ACROSS_NODES)
+        return self.kind in FAILING
+
+    def set_by_file(self, names: set[str]) -> bool:
+        """A drift from the default of a value a deployment file sets: the file is the
+        reference for it, so this is no finding (a drift from the file is one)."""
+        return self.kind == DRIFT_DEFAULT and self.parameter in names
 
     # A finding is a problem (genparams.errors.Problem): the node, the parameter, its kind.
     @property

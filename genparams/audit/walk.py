@@ -11,12 +11,20 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
-from genparams.audit.deployment import file_drift
-from genparams.audit.findings import BAD_SCHEMA, NO_SCHEMA, UNREACHABLE, Finding
+from genparams.audit.deployment import expected_values, file_drift
+from genparams.audit.findings import (
+    BAD_ANSWER,
+    BAD_SCHEMA,
+    DUPLICATE_NAME,
+    NO_SCHEMA,
+    UNREACHABLE,
+    Finding,
+)
 from genparams.audit.schema_checks import check_node
+from genparams.live.answers import NodeAnswerError
+from genparams.live.graph import Graph, is_hidden
 from genparams.paramsfile.params_reader import ParamsDocument
 from genparams.runtime.node.schema_topic import SCHEMA_TOPIC_SUFFIX
-from genparams.tune.graph import Graph
 
 
 @dataclass
@@ -33,26 +41,36 @@ class AuditResult:
 
 
 def settled_nodes(
-    graph: Graph, settle: float, timeout: float, wanted: Sequence[str] = ()
+    graph: Graph,
+    settle: float,
+    timeout: float,
+    wanted: Sequence[str] = (),
+    hidden: bool = False,
 ) -> list[str]:
     """The node list once discovery is done, or ``timeout`` passed.
 
     Named nodes: done when all of them appeared. Otherwise (discovery is gradual
     and nothing says it is over): when the list stopped changing for ``settle`` s.
+    Hidden nodes (names starting with ``_``) are listed with ``hidden`` or when named.
     """
     deadline = time.monotonic() + timeout
-    names = graph.node_names()
+
+    def listing() -> list[tuple[str, int]]:  # each name with how many nodes have it
+        counted = graph.counted_names()
+        return sorted((n, c) for n, c in counted.items() if hidden or wanted or not is_hidden(n))
+
+    names = listing()
     stable_since = time.monotonic()
     while time.monotonic() < deadline:
-        if wanted and set(wanted) <= set(names):
+        if wanted and set(wanted) <= {name for name, _ in names}:
             break
         time.sleep(0.05)
-        current = graph.node_names()
+        current = listing()
         if current != names:
             names, stable_since = current, time.monotonic()
         elif not wanted and names and time.monotonic() - stable_since >= settle:
             break
-    return names
+    return [name for name, _ in names]
 
 
 def schema_publishers(graph: Graph, names: Sequence[str], settle: float) -> list[str]:
@@ -76,16 +94,19 @@ BATCH = 16  # nodes read at once: their calls overlap, their clients stay few
 def read_batch(
     graph: Graph, names: Sequence[str], timeout: float, result: AuditResult
 ) -> list[tuple[str, dict[str, Any]]]:
-    """Values by node; a node that does not answer is a finding (read alone to tell which)."""
+    """Values by node; a node that does not answer, or answers what cannot be used, is a
+    finding (the batch is read again one node at a time to tell which)."""
     try:
         read = graph.read_nodes(names, timeout)
-    except TimeoutError:
+    except (TimeoutError, NodeAnswerError):
         read = {}
         for name in names:
             try:
                 read[name] = graph.read_node(name, timeout)
             except TimeoutError as exc:
                 result.findings.append(Finding(name, UNREACHABLE, "", str(exc)))
+            except NodeAnswerError as exc:
+                result.findings.append(Finding(name, BAD_ANSWER, "", str(exc)))
     finally:
         for name in names:
             graph.forget(name)
@@ -104,11 +125,14 @@ def audit(
     timeout: float = 5.0,
     trusted_packages: Sequence[str] = (),
     read_every: bool = False,
+    hidden: bool = False,
 ) -> AuditResult:
-    """``read_every``: read the values of nodes without a schema too (rules across nodes)."""
+    """Every node's findings; one node's failure (no answer, a malformed answer, a schema
+    that cannot be used) is a finding of that node, and the others are audited on.
+    ``read_every``: read the values of nodes without a schema too (rules across nodes)."""
     started = time.monotonic()
     result = AuditResult()
-    names = settled_nodes(graph, settle, timeout, only)
+    names = settled_nodes(graph, settle, timeout, only, hidden)
     if only:
         names = [name for name in names if name in only]
     publishers = schema_publishers(graph, names, settle)
@@ -117,6 +141,12 @@ def audit(
     to_read = []
     schemas: dict[str, dict[str, Any]] = {}
     for name in names:
+        claimants = graph.claimants(name)
+        if claimants > 1:
+            detail = f"{claimants} nodes have this name: their answers cannot be told apart"
+            result.audited.append(name)
+            result.findings.append(Finding(name, DUPLICATE_NAME, "", detail))
+            continue
         schema, problem = graph.schema_state(name) if name in publishers else (None, None)
         if problem is not None:
             result.audited.append(name)
@@ -133,7 +163,13 @@ def audit(
         for name, values in read_batch(graph, to_read[start : start + BATCH], timeout, result):
             schema = schemas.get(name)
             if schema is not None:
-                result.findings.extend(check_node(name, schema, values, trusted_packages))
+                from_file = set(expected_values(documents, name))
+                try:
+                    found = check_node(name, schema, values, trusted_packages)
+                except Exception as exc:  # whatever a message makes the checks raise
+                    detail = f"its schema cannot be checked: {type(exc).__name__}: {exc}"
+                    found = [Finding(name, BAD_SCHEMA, "", detail)]
+                result.findings.extend(f for f in found if not f.set_by_file(from_file))
             result.findings.extend(file_drift(name, documents, values))
             result.values[name] = values
     result.seconds = time.monotonic() - started

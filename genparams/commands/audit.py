@@ -1,4 +1,4 @@
-"""genparams audit [--params-file F ...] [--format text|json] [NODE...]: check a live graph."""
+"""genparams audit [--params-file F ...] [--only K | --skip K] [--format F] [NODE...]."""
 
 from __future__ import annotations
 
@@ -6,6 +6,7 @@ import argparse
 import sys
 from pathlib import Path
 
+from genparams.audit.findings import KINDS
 from genparams.errors import CommandError
 from genparams.paramsfile.node_rules import NodeRule
 from genparams.paramsfile.ros_yaml import absolute, node_name_problem
@@ -39,6 +40,28 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
         metavar="FILE",
         help="a deployment manifest: its rules across nodes are checked on the running graph",
     )
+    kinds = parser.add_mutually_exclusive_group()
+    kinds.add_argument(
+        "--only",
+        action="append",
+        default=[],
+        choices=KINDS,
+        metavar="KIND",
+        help=f"report only findings of KIND (repeatable; kinds: {', '.join(KINDS)})",
+    )
+    kinds.add_argument(
+        "--skip",
+        action="append",
+        default=[],
+        choices=KINDS,
+        metavar="KIND",
+        help="leave out findings of KIND (repeatable); the exit status follows what is reported",
+    )
+    parser.add_argument(
+        "--include-hidden",
+        action="store_true",
+        help="audit hidden nodes too (names starting with _, such as the ROS CLI's daemon)",
+    )
     parser.add_argument("--format", choices=("text", "json"), default="text")
     parser.add_argument(
         "--settle",
@@ -65,7 +88,7 @@ def run(args: argparse.Namespace) -> int:
     from genparams.audit.deployment import DeploymentError, read_deployment
     from genparams.audit.report import json_report, text_report
     from genparams.audit.walk import audit
-    from genparams.tune.graph import Graph
+    from genparams.live.graph import Graph
 
     try:
         documents = read_deployment(args.params_file)
@@ -83,6 +106,7 @@ def run(args: argparse.Namespace) -> int:
             timeout=args.timeout,
             trusted_packages=tuple(args.trust_package),
             read_every=bool(rules),
+            hidden=args.include_hidden,
         )
     finally:
         graph.close()
@@ -90,6 +114,11 @@ def run(args: argparse.Namespace) -> int:
         from genparams.audit.node_rules import rule_findings
 
         result.findings.extend(rule_findings(rules, result.values))
+    result.findings = [
+        f
+        for f in result.findings
+        if (not args.only or f.kind in args.only) and f.kind not in args.skip
+    ]
     sys.stdout.write(json_report(result) if args.format == "json" else text_report(result))
     return 1 if result.failing else 0
 

@@ -36,10 +36,11 @@ def run(args: argparse.Namespace) -> int:
     from genparams.import_node.convert import import_node
     from genparams.import_node.read import read_node
     from genparams.importing import schema_text
+    from genparams.live.answers import NodeAnswerError
 
     try:
         imported = import_node(node, read_node(node, args.timeout), args.name)
-    except TimeoutError as exc:
+    except (TimeoutError, NodeAnswerError) as exc:
         raise CommandError(f"genparams import-node: {exc}") from None
     header = [
         f"genparams schema read from the running node {node} by `genparams import-node`.",

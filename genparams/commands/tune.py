@@ -43,6 +43,11 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
     )
     parser.add_argument("--read-only", action="store_true", help="serve a view-only page")
     parser.add_argument(
+        "--include-hidden",
+        action="store_true",
+        help="list hidden nodes too (names starting with _, such as the ROS CLI's daemon)",
+    )
+    parser.add_argument(
         "--trust-package",
         action="append",
         default=[],
@@ -80,6 +85,7 @@ def run(args: argparse.Namespace) -> int:
         read_only=args.read_only,
         token=token,
         trusted_packages=tuple(args.trust_package),
+        include_hidden=args.include_hidden,
     )
     try:
         print(f"genparams tune: serving {server.start()}", flush=True)

@@ -1,60 +1,35 @@
-"""Read every parameter of a running node over its list, get and describe services."""
+"""Read every parameter of a running node with the live graph's one reader."""
 
 from __future__ import annotations
 
 from typing import Any
 
-from rcl_interfaces.msg import ParameterValue
-from rcl_interfaces.srv import DescribeParameters, GetParameters, ListParameters
-
 from genparams.import_node.convert import NOT_SET, Reported
-from genparams.tune.graph import Graph
-from genparams.tune.reader import answers, python_value
+from genparams.live.answers import ReadParameter, python_value
+from genparams.live.graph import Graph
 
 
 def read_node(node: str, timeout: float) -> list[Reported]:
-    """What ``ros2 param list``, ``get`` and ``describe`` show of ``node``, one call each.
+    """What ``ros2 param list``, ``get`` and ``describe`` show of ``node``.
 
-    Raises TimeoutError when the node's services do not appear or answer in time."""
+    Raises TimeoutError when the node's services do not appear or answer in time, and
+    :class:`~genparams.live.answers.NodeAnswerError` when what they answer cannot be used."""
     graph = Graph("genparams_import_node")
     try:
-        reader = graph.reader(node)
-        if not reader.wait_ready(timeout):
-            raise TimeoutError(f"{node}: parameter services did not appear in {timeout:g} s")
-        # A service is ready before its replies to a new client can arrive: the first
-        # requests are sent again until answered.
-        listing = answers(
-            [lambda: reader.lister.call_async(ListParameters.Request(depth=0))], timeout
-        )
-        names = sorted(listing[0].result.names)
-        got, described = answers(
-            [
-                lambda: reader.getter.call_async(GetParameters.Request(names=names)),
-                lambda: reader.describer.call_async(DescribeParameters.Request(names=names)),
-            ],
-            timeout,
-        )
-        values = list(got.values)
-        descriptors = described.descriptors
-        if len(values) != len(names):
-            # rclpy answers a get naming a parameter declared by type only, with no value
-            # yet, with no values at all: ask one name at a time, that one reads as unset.
-            values = [_value(reader.getter, name, timeout) for name in names]
+        read = graph.read_raw([node], timeout)[node]
     finally:
         graph.close()
-    return [_reported(n, v, d) for n, v, d in zip(names, values, descriptors, strict=True)]
+    return [_reported(parameter) for parameter in read]
 
 
-def _value(getter: Any, name: str, timeout: float) -> Any:
-    asked = answers([lambda: getter.call_async(GetParameters.Request(names=[name]))], timeout)
-    return asked[0].values[0] if asked[0].values else ParameterValue(type=NOT_SET)
+def _range(ranges: Any) -> tuple[Any, Any, Any] | None:
+    return (ranges[0].from_value, ranges[0].to_value, ranges[0].step) if ranges else None
 
 
-def _reported(name: str, value: Any, descriptor: Any) -> Reported:
-    integer = descriptor.integer_range[0] if descriptor.integer_range else None
-    floating = descriptor.floating_point_range[0] if descriptor.floating_point_range else None
+def _reported(parameter: ReadParameter) -> Reported:
+    value, descriptor = parameter.value, parameter.descriptor
     return Reported(
-        name=name,
+        name=parameter.name,
         type=value.type,
         value=None if value.type == NOT_SET else python_value(value),
         description=descriptor.description,
@@ -62,10 +37,6 @@ def _reported(name: str, value: Any, descriptor: Any) -> Reported:
         read_only=descriptor.read_only,
         dynamic_typing=descriptor.dynamic_typing,
         descriptor_type=descriptor.type,
-        integer_range=None
-        if integer is None
-        else (integer.from_value, integer.to_value, integer.step),
-        floating_point_range=None
-        if floating is None
-        else (floating.from_value, floating.to_value, floating.step),
+        integer_range=_range(descriptor.integer_range),
+        floating_point_range=_range(descriptor.floating_point_range),
     )

@@ -21,16 +21,19 @@ from starlette.staticfiles import StaticFiles
 from starlette.types import ASGIApp
 
 from genparams._version import __version__
+from genparams.live.answers import NodeAnswerError
+from genparams.live.graph import Graph
+from genparams.live.services import StillWorkingError
 from genparams.tune.bodies import RequestError, edits, node_name, set_request
 from genparams.tune.checking import Checker
 from genparams.tune.events import EventStreams
-from genparams.tune.graph import Graph
 from genparams.tune.json_response import JSONResponse
 from genparams.tune.params_dump import params_file_text
 from genparams.tune.places import entry_places
 from genparams.tune.security import Gate, Policy
 
 STATIC = Path(__file__).resolve().parent / "static"
+SET_WAIT_SECONDS = 5.0  # a set not answered by then is told as still working (202), not failed
 WRITES = frozenset({"/api/set"})  # /api/check changes nothing: a read-only page may ask it
 
 
@@ -38,7 +41,8 @@ class TuneApp:
     """The routes over one :class:`Graph`, behind the :class:`Gate` of ``token``.
 
     Naming ``nodes`` restricts every route to them: others are not listed, not
-    read, not set, and their events are not sent.
+    read, not set, and their events are not sent. Hidden nodes (names starting
+    with ``_``) are listed with ``include_hidden`` only; any node can be named.
     """
 
     def __init__(
@@ -50,8 +54,10 @@ class TuneApp:
         nodes: tuple[str, ...] = (),
         host: str = "127.0.0.1",
         trusted_packages: tuple[str, ...] = (),
+        include_hidden: bool = False,
     ) -> None:
         self.graph = graph
+        self.include_hidden = include_hidden
         self.policy = Policy(token=token, bound_host=host, read_only=read_only, writes=WRITES)
         self.checker = Checker(graph.node, trusted_packages)
         self.read_only = read_only
@@ -71,7 +77,7 @@ class TuneApp:
                 Route("/api/events", self.events),
                 Mount("/static", StaticFiles(directory=STATIC), name="static"),
             ],
-            exception_handlers={RequestError: bad_request},
+            exception_handlers={RequestError: bad_request, NodeAnswerError: bad_answer},
         )
         return Gate(app, self.policy)
 
@@ -95,29 +101,36 @@ class TuneApp:
         return JSONResponse({"read_only": self.read_only, "version": __version__})
 
     async def nodes(self, request: Request) -> Response:
-        names = await run_in_threadpool(self.graph.node_names)
-        listed = []
-        for n in filter(self.shown, names):
-            schema, problem = self.graph.schema_state(n)
-            listed.append({"name": n, "genparams": schema is not None, "schema_problem": problem})
-        return JSONResponse({"nodes": listed})
+        def listed() -> list[dict[str, Any]]:
+            found = []
+            for n in filter(self.shown, self.graph.node_names(hidden=self.include_hidden)):
+                schema, problem = self.graph.schema_state(n)
+                found.append(
+                    {"name": n, "genparams": schema is not None, "schema_problem": problem}
+                )
+            return found
+
+        return JSONResponse({"nodes": await run_in_threadpool(listed)})
 
     async def node(self, request: Request) -> Response:
+        """A node's parameters, schema and entry places: all of it read off the event loop."""
         name = await self.target(request.query_params.get("name"))
-        try:
-            parameters = await run_in_threadpool(self.graph.read_node, name)
-        except TimeoutError as exc:
-            return JSONResponse({"error": str(exc)}, status_code=504)
-        schema, problem = self.graph.schema_state(name)
-        return JSONResponse(
-            {
+
+        def answer() -> dict[str, Any]:
+            parameters = self.graph.read_node(name)
+            schema, problem = self.graph.schema_state(name)
+            return {
                 "node": name,
                 "schema": schema,
                 "schema_problem": problem,
                 "parameters": parameters,
                 "places": entry_places(schema, parameters),
             }
-        )
+
+        try:
+            return JSONResponse(await run_in_threadpool(answer))
+        except TimeoutError as exc:
+            return JSONResponse({"error": str(exc)}, status_code=504)
 
     async def set(self, request: Request) -> Response:
         if self.read_only:  # the gate refuses it first; a second lock on the one write
@@ -126,8 +139,14 @@ class TuneApp:
         node = await self.target(wanted.node)
         try:
             results = await run_in_threadpool(
-                self.graph.set_parameters, node, wanted.parameters, wanted.atomic
+                self.graph.set_parameters,
+                node,
+                wanted.parameters,
+                wanted.atomic,
+                SET_WAIT_SECONDS,
             )
+        except StillWorkingError as exc:  # sent once; its change shows by the node's events
+            return JSONResponse({"pending": True, "detail": str(exc), "results": []}, 202)
         except TimeoutError as exc:
             return JSONResponse({"error": str(exc)}, status_code=504)
         return JSONResponse({"results": results})
@@ -150,11 +169,15 @@ class TuneApp:
 
     async def params_file(self, request: Request) -> Response:
         name = await self.target(request.query_params.get("node"))
+
+        def answer() -> str:
+            parameters = self.graph.read_node(name)
+            return params_file_text(name, parameters, self.graph.schema(name))
+
         try:
-            parameters = await run_in_threadpool(self.graph.read_node, name)
+            text = await run_in_threadpool(answer)
         except TimeoutError as exc:
             return JSONResponse({"error": str(exc)}, status_code=504)
-        text = params_file_text(name, parameters, self.graph.schema(name))
         filename = name.strip("/").replace("/", "_") or "node"
         return Response(
             text,
@@ -177,3 +200,8 @@ class NotServedError(RequestError):
 async def bad_request(request: Request, exc: Exception) -> Response:
     status = exc.status if isinstance(exc, NotServedError) else 400
     return JSONResponse({"error": str(exc)}, status_code=status)
+
+
+async def bad_answer(request: Request, exc: Exception) -> Response:
+    """A node answered what cannot be used: the request was fine, the node is not (422)."""
+    return JSONResponse({"error": str(exc)}, status_code=422)

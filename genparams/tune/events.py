@@ -17,8 +17,8 @@ from typing import Any
 from starlette.responses import Response, StreamingResponse
 from starlette.types import Receive, Scope, Send
 
+from genparams.live.graph import Graph
 from genparams.runtime.core.json_codec import dumps
-from genparams.tune.graph import Graph
 from genparams.tune.json_response import JSONResponse
 
 KEEPALIVE_SECONDS = 15.0

@@ -7,29 +7,34 @@ from typing import Any
 
 import yaml
 
+from genparams.runtime.core.entries import map_places
+
 
 def owned_names(schema: Mapping[str, Any], values: Mapping[str, Any]) -> set[str]:
-    """The full names a schema message covers, mapped entries expanded with the live keys."""
+    """The full names a schema message covers: its parameters, and each mapped entry where
+    the runtime's own place mapping puts it on the node (open groups and groups in entries
+    included)."""
     names: set[str] = set()
     for described in schema.get("classes", []):
         names.update(p["name"] for p in described["parameters"])
-        for group in described["maps"]:
-            keys = values.get(group["for_each"]) or []
-            for key in keys:
-                names.update(
-                    ".".join(p for p in (group["path"], key, f["name"]) if p)
-                    for f in group["fields"]  # a field named "" is the entry itself (per item)
-                )
+        for place in map_places(described["maps"], values):
+            names.update(name for name, _ in place.entries())
     return names
 
 
 def nested(flat: Iterable[tuple[str, Any]]) -> dict[str, Any]:
+    """Values nested by the dots of their names. A name below another's value (``a.b`` beside
+    ``a``) keeps the rest of its name as one dotted key, which ROS reads back the same."""
     tree: dict[str, Any] = {}
     for name, value in sorted(flat):
         *heads, leaf = name.split(".")
         level = tree
-        for head in heads:
-            level = level.setdefault(head, {})
+        for depth, head in enumerate(heads):
+            below = level.setdefault(head, {})
+            if not isinstance(below, dict):
+                leaf = ".".join([*heads[depth:], leaf])
+                break
+            level = below
         level[leaf] = value
     return tree
 

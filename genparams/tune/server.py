@@ -8,8 +8,8 @@ import time
 
 import uvicorn
 
+from genparams.live.graph import Graph
 from genparams.tune.app import TuneApp
-from genparams.tune.graph import Graph
 from genparams.tune.security import token_problem, url_host
 
 
@@ -34,6 +34,7 @@ class TuneServer:
         token: str | None = None,
         graph: Graph | None = None,
         trusted_packages: tuple[str, ...] = (),
+        include_hidden: bool = False,
     ) -> None:
         if token is None:
             token = new_token()
@@ -50,6 +51,7 @@ class TuneServer:
             nodes=nodes,
             host=host,
             trusted_packages=trusted_packages,
+            include_hidden=include_hidden,
         )
         config = uvicorn.Config(
             self.app.starlette(),

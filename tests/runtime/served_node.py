@@ -14,7 +14,7 @@ from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 
 from genparams.audit.walk import AuditResult, audit
-from genparams.tune.graph import Graph
+from genparams.live.graph import Graph
 from tests.patience import WAIT_S
 from tests.support import unique_name
 

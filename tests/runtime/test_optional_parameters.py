@@ -16,8 +16,8 @@ from rclpy.node import Node
 from rclpy.parameter import Parameter
 
 from genparams.audit.findings import VIOLATION
+from genparams.live.graph import Graph
 from genparams.runtime import ParameterDeclarationError
-from genparams.tune.graph import Graph
 from tests.golden import CASES
 from tests.patience import WAIT_S
 from tests.runtime.served_node import audit_served, first_read, served

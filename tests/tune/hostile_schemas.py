@@ -16,7 +16,7 @@ import rclpy
 from rclpy.node import Node
 from std_msgs.msg import String
 
-from genparams.tune.graph import SCHEMA_QOS
+from genparams.live.schema_topics import SCHEMA_QOS
 from tests.node_process import serve
 
 

@@ -13,8 +13,8 @@ from genparams.audit.deployment import read_deployment
 from genparams.audit.findings import DRIFT_DEFAULT, DRIFT_FILE, NO_SCHEMA, VIOLATION
 from genparams.audit.report import json_report
 from genparams.audit.walk import AuditResult, audit
+from genparams.live.graph import Graph
 from genparams.runtime.node.schema_topic import SCHEMA_TOPIC_SUFFIX
-from genparams.tune.graph import Graph
 from tests.patience import WAIT_S
 from tests.support import RosHarness, ServiceClient
 from tests.tune.support import demo_nodes, eventually, run_audit, unique

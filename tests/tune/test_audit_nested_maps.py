@@ -17,9 +17,9 @@ from rclpy.node import Node
 
 from genparams.audit.findings import DRIFT_DEFAULT, VIOLATION
 from genparams.audit.walk import AuditResult, audit
+from genparams.live.graph import Graph
 from genparams.runtime.core.spec import compile_schema
 from genparams.runtime.node.schema_topic import publish_schema
-from genparams.tune.graph import Graph
 from tests.runtime.served_node import served_node
 from tests.support import load_generated, unique_name
 from tests.tune.support import eventually

@@ -13,7 +13,7 @@ from collections.abc import Iterator
 
 import pytest
 
-from genparams.tune.graph import UNSEEN_GRACE_SECONDS, Graph
+from genparams.live.graph import UNSEEN_GRACE_SECONDS, Graph
 from tests.patience import WAIT_S
 from tests.tune.support import demo_nodes, eventually, unique
 

@@ -11,8 +11,8 @@ from rclpy.node import Node
 from std_msgs.msg import String
 
 from genparams import __version__
+from genparams.live.schema_topics import SCHEMA_QOS
 from genparams.runtime.node.schema_topic import SCHEMA_TOPIC_SUFFIX
-from genparams.tune.graph import SCHEMA_QOS
 from tests.support import ROOT, RosHarness, load_generated
 
 

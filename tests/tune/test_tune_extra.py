@@ -43,6 +43,6 @@ def test_tune_without_the_extra_prints_the_install_command(missing: str) -> None
 
 
 def test_another_missing_module_is_not_taken_for_the_extra() -> None:
-    done = tune_without("genparams.tune.graph")
+    done = tune_without("genparams.live.graph")
     assert done.returncode == 1 and INSTALL_HINT not in done.stderr
     assert "ModuleNotFoundError" in done.stderr

@@ -18,7 +18,7 @@ import pytest
 from rclpy.parameter import Parameter
 
 from genparams.cli import main as cli_main
-from genparams.tune.graph import Graph
+from genparams.live.graph import Graph
 from genparams.tune.server import TuneServer
 from tests.node_process import STOP_S
 from tests.support import ROOT, RosHarness, ServiceClient

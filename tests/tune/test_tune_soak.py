@@ -1,9 +1,16 @@
-"""A long-running tuning server stays flat: page loads, node churn and event floods.
+"""A long-running tuning server stays flat: page loads, node churn and event floods, with
+hostile nodes in the graph the whole time.
 
 ``genparams tune`` runs in its own process; this test drives it over HTTP as
 pages do and starts and stops self-describing nodes around it, then compares
 the server's resident memory and open file descriptors after a warm-up with
-their values at the end.
+their values at the end. Beside them run nodes that misbehave: one publishes a
+4 MB schema message and one nested 100,000 deep, two answer malformed (fewer
+descriptors than names, a value of type 42), one forges ``/parameter_events``
+five times a second for a plain node, one takes 0.5 s over every set. Each batch
+opens every hostile node (a 422 or its problem, never a 500) and sets the slow one;
+the well-behaved nodes stay tunable throughout, and the plain node's values on
+the event stream are what it holds.
 
 The default scale runs in well under two minutes; ``GENPARAMS_SOAK_SCALE=10``
 (``make soak SCALE=10``) runs ten times as much for a longer look. The figures
@@ -24,7 +31,11 @@ from pathlib import Path
 
 import pytest
 
+from genparams.runtime.node.schema_topic import SCHEMA_TOPIC_SUFFIX
 from genparams.tune import app
+from tests.live.hostile_nodes import FORGED_GAIN
+from tests.live.support import hostile_nodes
+from tests.node_process import node_process
 from tests.patience import WAIT_S
 from tests.support import ROOT
 from tests.tune.support import eventually, http_call, open_stream, unique
@@ -42,6 +53,11 @@ WARM_UP = 0.4  # the share of the work done before the first measurement
 RSS_BOUND_KIB = 24 * 1024
 FD_BOUND = 4
 TOKEN = "soak-test-token-0123456789"
+BIG, DEEP = f"/{unique('soak_big')}", f"/{unique('soak_deep')}"
+SHORT, TYPE42 = f"/{unique('soak_short')}", f"/{unique('soak_t42')}"
+PLAIN, FORGER, SLOW = (f"/{unique(f'soak_{k}')}" for k in ("plain", "forger", "slow"))
+MALFORMED = (SHORT, TYPE42)  # their answers: 422
+WITH_PROBLEM = (BIG, DEEP)  # their schemas: a problem in place of the schema
 ASSETS = sorted(p.name for p in app.STATIC.iterdir() if p.suffix in (".js", ".css"))
 
 
@@ -80,8 +96,48 @@ def set_gain(port: int, node: str, value: float) -> None:
     assert answer.ok and answer.json()["results"][0]["successful"], answer.body
 
 
+def hostile_schemas(workdir: Path) -> Path:
+    """The entries of tests.tune.hostile_schemas: a 4 MB message and one nested 100,000 deep."""
+    texts = {BIG: '{"format": 1, "pad": "' + "x" * (4 << 20) + '"}', DEEP: "[" * 100_000}
+    entries = [
+        {"node": node[1:], "topic": node + SCHEMA_TOPIC_SUFFIX, "text": text}
+        for node, text in texts.items()
+    ]
+    path = workdir / "hostile.json"
+    path.write_text(json.dumps(entries), encoding="utf-8")
+    return path
+
+
+def visit_hostiles(port: int) -> None:
+    """Open every hostile node as a page would, and set the slow one."""
+    cookie = {"Cookie": f"genparams-tune-{port}={TOKEN}"}
+    for node in MALFORMED:
+        answer = http_call(port, "GET", f"/api/node?name={node}", headers=cookie)
+        assert answer.status == 422, (node, answer.status, answer.body)
+    for node in WITH_PROBLEM:
+        answer = http_call(port, "GET", f"/api/node?name={node}", headers=cookie)
+        assert answer.ok and answer.json()["schema_problem"], (node, answer.status, answer.body)
+    body = {"node": SLOW, "params": [{"name": "counter", "type": "int", "value": 1}]}
+    answer = http_call(port, "POST", "/api/set", body=json.dumps(body).encode(), token=TOKEN)
+    assert answer.ok and answer.json()["results"][0]["successful"], answer.body
+
+
 @pytest.mark.slow
 def test_soak(tmp_path: Path) -> None:
+    with (
+        hostile_nodes(
+            f"{SHORT[1:]}:short_describe",
+            f"{TYPE42[1:]}:type42",
+            f"{PLAIN[1:]}:plain",
+            f"{FORGER[1:]}:forger:{PLAIN}",
+            f"{SLOW[1:]}:slow:0.5:{tmp_path / 'slow.count'}",
+        ),
+        node_process("tests.tune.hostile_schemas", str(hostile_schemas(tmp_path))),
+    ):
+        soak(tmp_path)
+
+
+def soak(tmp_path: Path) -> None:
     server = subprocess.Popen(
         [sys.executable, "-m", "genparams", "tune", "--port", "0", "--token", TOKEN],
         cwd=ROOT,
@@ -106,11 +162,17 @@ def test_soak(tmp_path: Path) -> None:
         stream = reader.getresponse()
         assert stream.status == 200
         events = [0]
+        plain_gains: set[float] = set()  # what the stream said the forged-for node holds
 
         def read_events() -> None:
             try:
                 while line := stream.readline():
-                    events[0] += line.startswith(b"data: ")
+                    if not line.startswith(b"data: "):
+                        continue
+                    events[0] += 1
+                    event = json.loads(line[len(b"data: ") :])
+                    if event.get("node") == PLAIN and "gain" in event.get("changed", {}):
+                        plain_gains.add(event["changed"]["gain"])
             except (OSError, ValueError, AttributeError):
                 pass  # closed at the end
 
@@ -127,6 +189,8 @@ def test_soak(tmp_path: Path) -> None:
                 set_gain(port, names[index % BATCH], 1.0 + index * 0.1)
             for index in range(loads_per_batch):
                 page_load(port, names[index % BATCH])
+            eventually(lambda: listed(port, [SLOW, *MALFORMED]), interval=0.1)
+            visit_hostiles(port)
             churn.stdin.write("next\n")
             churn.stdin.flush()
         churn.stdout.readline()  # the last batch, never read
@@ -135,6 +199,10 @@ def test_soak(tmp_path: Path) -> None:
         churn.wait(timeout=30)
         # The open page sees every set; the last ones may still be on their way.
         eventually(lambda: events[0] >= BATCHES * SETS_PER_BATCH)
+        # The forged events were read from the node: the stream told what it holds.
+        eventually(lambda: plain_gains)
+        assert plain_gains == {1.5}, plain_gains
+        assert FORGED_GAIN not in plain_gains
 
         # The last nodes' clients go once the graph has seen them gone at two sweeps.
         deadline = time.monotonic() + WAIT_S

@@ -210,6 +210,27 @@ class MapPlace:
                 yield ".".join(p for p in (self.path, key, field["name"]) if p), field
 
 
+class _KeysIndex:
+    """The keys under every namespace of ``names`` (:func:`keys_under` for any place), from
+    a tree of their segments built on first use: one pass over the names."""
+
+    def __init__(self, names: Iterable[str]) -> None:
+        self.names = names
+        self.tree: dict[str, Any] | None = None
+
+    def keys(self, path: str) -> tuple[str, ...]:
+        if self.tree is None:
+            self.tree = {}
+            for name in self.names:
+                branch = self.tree
+                for part in name.split("."):
+                    branch = branch.setdefault(part, {})
+        level: dict[str, Any] | None = self.tree
+        for part in path.split("."):
+            level = level.get(part) if level is not None else None
+        return () if level is None else tuple(key for key, below in level.items() if below)
+
+
 def map_places(maps: Iterable[Mapping[str, Any]], values: Mapping[str, Any]) -> list[MapPlace]:
     """Every place of the mapped groups of a schema message (``maps``, with full names) on a
     node whose parameters are ``values`` (by full name): a group inside an entry of another
@@ -219,31 +240,45 @@ def map_places(maps: Iterable[Mapping[str, Any]], values: Mapping[str, Any]) -> 
     A node holds a parameter in every place its own schema has (a little more for entries
     it failed to declare): places past one per parameter, plus PLACES_BEYOND, are not
     listed, so a schema message nesting groups deep over long lists cannot make the
-    reader expand a product of them."""
+    reader expand a product of them. Each group's places are found once, and the keys of
+    open groups in one pass over the names: the work grows with the message and the
+    node's names, not with a power of the nesting."""
     groups = {str(m["path"]): m for m in maps}
     budget = len(values) + PLACES_BEYOND
+    declared = _KeysIndex(values)
+    found_places: dict[str, list[str]] = {}
 
     def keys_at(group: Mapping[str, Any], path: str) -> tuple[str, ...]:
         if str(group["for_each"]).endswith(OVERRIDE_KEYS):
-            return tuple(keys_under(path, values))
+            return declared.keys(path)
         listed = values.get(str(group["for_each"]))
         if not isinstance(listed, (list, tuple)):
             return ()
         return tuple(k for k in listed if isinstance(k, str))
 
     def places(path: str) -> list[str]:
-        outer = map_chain(path)
-        if not outer or outer[-1] not in groups:
-            return [path]
-        head = f"{outer[-1]}.{ENTRY_KEY}." if outer[-1] else f"{ENTRY_KEY}."
-        rest = path[len(head) :]
+        known = found_places.get(path)
+        if known is not None:
+            return known
+        dotted = f".{path}."
+        star = dotted.rfind(f".{ENTRY_KEY}.")  # the innermost entry the group lies in
+        outer, rest = dotted[1:star], dotted[star + len(ENTRY_KEY) + 2 : -1]
+        if star < 0 or outer not in groups:
+            found_places[path] = [path]
+            return found_places[path]
         found: list[str] = []
-        for place in places(outer[-1]):
-            for key in keys_at(groups[outer[-1]], place):
+        for place in places(outer):
+            for key in keys_at(groups[outer], place):
                 if len(found) >= budget:
-                    return found
+                    break
                 found.append(".".join(p for p in (place, key, rest) if p))
+        found_places[path] = found
         return found
 
-    listed = [MapPlace(g, p, keys_at(g, p)) for path, g in groups.items() for p in places(path)]
-    return listed[:budget]
+    listed: list[MapPlace] = []
+    for path, group in groups.items():
+        for place in places(path):
+            if len(listed) >= budget:
+                return listed
+            listed.append(MapPlace(group, place, keys_at(group, place)))
+    return listed

@@ -1,0 +1,1 @@
+"""The live ROS graph, read once for every tool: nodes, their parameters, schemas and events."""
