@@ -9,6 +9,7 @@ import time
 import uvicorn
 
 from genparams.tune.app import TuneApp
+from genparams.tune.connections import bounded_protocol
 from genparams.tune.graph import Graph
 from genparams.tune.security import token_problem, url_host
 
@@ -55,6 +56,7 @@ class TuneServer:
             self.app.starlette(),
             host=host,
             port=port,
+            http=bounded_protocol(),  # idle and slow connections bounded in number and time
             log_level="warning",
             access_log=False,  # a request line could carry the token
             server_header=False,
