@@ -15,7 +15,7 @@ from genparams.rclpy_import.convert import APPROXIMATE, LEFT_OUT, Imported
 from genparams.rclpy_import.node_file import NodeFileError, import_node
 from genparams.rclpy_import.patch import patch_diff
 from genparams.schema.errors import SchemaError
-from genparams.schema.loader import MAX_BYTES
+from genparams.schema.input_file import read_input_file
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -44,11 +44,9 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 def run(args: argparse.Namespace) -> int:
     file = str(args.source)
     try:
-        if args.source.stat().st_size > MAX_BYTES:
-            raise CommandError(f"{file}:1:1: file is larger than {MAX_BYTES} bytes")
-        text = args.source.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise CommandError(f"{file}:1:1: cannot read: {exc}") from None
+        text = read_input_file(args.source, "rclpy source")
+    except SchemaError as exc:
+        raise CommandError(exc) from None
     try:
         node = import_node(text, file, args.class_name)
     except NodeFileError as exc:
