@@ -21,6 +21,8 @@ from pathlib import Path
 from typing import Any
 
 from genparams.errors import GenparamsError
+from genparams.schema.errors import SchemaError
+from genparams.schema.input_file import read_input_file
 
 PYPROJECT = "pyproject.toml"
 _MODULE_KEYS = ("schema", "output")
@@ -70,8 +72,10 @@ def find_pyproject(start: Path) -> Path | None:
 def load_project_config(pyproject: Path) -> ProjectConfig:
     """Read ``[tool.genparams]`` from ``pyproject``. Raises ProjectConfigError on any problem."""
     try:
-        document = tomllib.loads(pyproject.read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
+        document = tomllib.loads(read_input_file(pyproject, "pyproject.toml"))
+    except SchemaError as exc:
+        raise ProjectConfigError(str(exc)) from None
+    except tomllib.TOMLDecodeError as exc:
         raise ProjectConfigError(f"{pyproject}: cannot read: {exc}") from None
     table = document.get("tool", {}).get("genparams")
     if table is None:

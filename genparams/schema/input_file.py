@@ -1,17 +1,30 @@
 """Reading a file genparams was given: bounded, decoded, and named in every error.
 
-Schemas, params files, manifests and generate_parameter_library files are all
-read here. The size limit is enforced while reading (at most one byte past it
-is read), never by asking the file system first: ``/dev/zero``, a FIFO, a pipe
+Schemas, params files, manifests, generate_parameter_library files and rclpy
+sources are all read here. The size limit is enforced while reading (at most one
+byte past it is read), never by asking the file system first: a FIFO, a pipe
 from ``<(...)`` or a file under ``/proc`` reports a size of 0 and reads on.
+
+The file is opened without blocking (a FIFO nobody writes to would block
+``open`` for ever), then must be a regular file or a pipe. Devices
+(``/dev/zero``, a terminal) and sockets are refused. A pipe must be written
+whole within ``PIPE_TIMEOUT_S``.
 """
 
 from __future__ import annotations
 
 import os
+import select
+import stat
+import time
+from collections.abc import Callable
 
 from genparams.schema.errors import Location, SchemaError, SchemaProblem
 from genparams.schema.loader import MAX_BYTES
+
+# A pipe such as <(generate-params) is written by a command that runs meanwhile.
+PIPE_TIMEOUT_S = 30.0
+_CHUNK = 1 << 16
 
 
 def read_input_file(path: str | os.PathLike[str], what: str) -> str:
@@ -23,8 +36,7 @@ def read_input_file(path: str | os.PathLike[str], what: str) -> str:
     """
     file = os.fsdecode(path)
     try:
-        with open(path, "rb") as handle:
-            data = handle.read(MAX_BYTES + 1)
+        data = _read_bounded(path, file, what)
     except OSError as exc:
         reason = exc.strerror or type(exc).__name__
         raise _problem(file, 1, 1, f"cannot read {what}: {reason}") from None
@@ -44,6 +56,65 @@ def read_input_file(path: str | os.PathLike[str], what: str) -> str:
             f"at offset {exc.start})",
         ) from None
     return text.replace("\r\n", "\n").replace("\r", "\n")
+
+
+def _read_bounded(path: str | os.PathLike[str], file: str, what: str) -> bytes:
+    """At most ``MAX_BYTES + 1`` bytes of a regular file or a pipe; OSError as it comes."""
+    fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | os.O_CLOEXEC)
+    try:
+        mode = os.fstat(fd).st_mode
+        if stat.S_ISDIR(mode):
+            raise IsADirectoryError(21, "Is a directory")
+        if stat.S_ISREG(mode):
+            os.set_blocking(fd, True)
+            return _read_until(fd, lambda: None)
+        if stat.S_ISFIFO(mode):
+            deadline = time.monotonic() + PIPE_TIMEOUT_S
+            return _read_until(fd, lambda: _wait(fd, deadline, file, what))
+        raise _problem(file, 1, 1, f"cannot read {what}: {_kind(mode)}, not a file or a pipe")
+    finally:
+        os.close(fd)
+
+
+def _read_until(fd: int, wait: Callable[[], None]) -> bytes:
+    """Read ``fd`` to its end or one byte past the limit, calling ``wait`` before each read."""
+    chunks: list[bytes] = []
+    size = 0
+    while size <= MAX_BYTES:
+        wait()
+        try:
+            chunk = os.read(fd, min(_CHUNK, MAX_BYTES + 1 - size))
+        except BlockingIOError:
+            continue
+        if not chunk:
+            break
+        chunks.append(chunk)
+        size += len(chunk)
+    return b"".join(chunks)
+
+
+def _wait(fd: int, deadline: float, file: str, what: str) -> None:
+    """Until the pipe ``fd`` has data or its writer left; refused once ``deadline`` passes."""
+    poller = select.poll()
+    poller.register(fd, select.POLLIN)
+    left = deadline - time.monotonic()
+    if left <= 0 or not poller.poll(left * 1000):
+        raise _problem(
+            file,
+            1,
+            1,
+            f"cannot read {what}: the pipe was not written whole within {PIPE_TIMEOUT_S:g} s",
+        )
+
+
+def _kind(mode: int) -> str:
+    if stat.S_ISCHR(mode):
+        return "a character device"
+    if stat.S_ISBLK(mode):
+        return "a block device"
+    if stat.S_ISSOCK(mode):
+        return "a socket"
+    return "not a regular file"
 
 
 def _problem(file: str, line: int, column: int, message: str) -> SchemaError:

@@ -10,6 +10,7 @@ import uvicorn
 
 from genparams.live.graph import Graph
 from genparams.tune.app import TuneApp
+from genparams.tune.connections import bounded_protocol
 from genparams.tune.security import token_problem, url_host
 
 
@@ -57,6 +58,7 @@ class TuneServer:
             self.app.starlette(),
             host=host,
             port=port,
+            http=bounded_protocol(),  # idle and slow connections bounded in number and time
             log_level="warning",
             access_log=False,  # a request line could carry the token
             server_header=False,

@@ -1,9 +1,10 @@
 """Every command reads its files through one bounded reader: a clear error naming the file.
 
-``/dev/zero`` and a FIFO fed without end report a size of 0 to ``stat()``; they
-must be refused after the size limit is read, in bounded memory, with exit 2
-(docs/cli.md: bad input). Missing files, folders and files that are not UTF-8
-name the file too, whichever command reads them.
+A FIFO fed without end reports a size of 0 to ``stat()``; it must be refused
+after the size limit is read, in bounded memory, with exit 2 (docs/cli.md: bad
+input). A FIFO nobody writes to is refused after a wait, never blocks for ever;
+devices such as ``/dev/zero`` are refused at once. Missing files, folders and
+files that are not UTF-8 name the file too, whichever command reads them.
 """
 
 from __future__ import annotations
@@ -18,6 +19,8 @@ from pathlib import Path
 
 import pytest
 
+from genparams.schema import input_file
+from genparams.schema.errors import SchemaError
 from genparams.schema.input_file import read_input_file
 from genparams.schema.loader import MAX_BYTES
 from tests.golden import ROOT, run_cli
@@ -29,6 +32,7 @@ GOOD_PARAMS = "/**:\n  ros__parameters:\n    serial: ABCD1234\n"
 # What each command reads, as (command line with FILE where the input goes, what it calls it).
 COMMANDS = {
     "validate": (["validate", "FILE"], "schema"),
+    "import-rclpy": (["import-rclpy", "FILE"], "rclpy source"),
     "generate": (["generate", "FILE"], "schema"),
     "import-gpl": (["import-gpl", "FILE"], "generate_parameter_library file"),
     "check-params": (["check-params", str(SCHEMA), "FILE"], "params file"),
@@ -137,6 +141,55 @@ def test_a_fifo_holding_a_params_file_is_read(tmp_path: Path) -> None:
     writer.join(timeout=10)
 
 
+@pytest.mark.parametrize("command", COMMANDS)
+def test_a_fifo_nobody_writes_to_is_refused_after_a_wait(
+    command: str, tmp_path: Path, good: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Opening a FIFO blocks until a writer comes: the reader opens it without blocking."""
+    monkeypatch.setattr(input_file, "PIPE_TIMEOUT_S", 0.2)
+    fifo = tmp_path / "nobody writes.fifo"
+    os.mkfifo(fifo)
+    code, stderr = run_cli(*command_line(command, fifo, good))
+    assert (code, stderr) == (
+        2,
+        f"{fifo}:1:1: cannot read {COMMANDS[command][1]}: "
+        "the pipe was not written whole within 0.2 s\n",
+    )
+
+
+def test_a_fifo_whose_writer_stalls_is_refused(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(input_file, "PIPE_TIMEOUT_S", 0.5)
+    fifo = tmp_path / "stalled.fifo"
+    os.mkfifo(fifo)
+    writer_ready = threading.Event()
+    release = threading.Event()
+
+    def stall() -> None:
+        with open(fifo, "wb", buffering=0) as pipe:  # opens once the reader has
+            pipe.write(b"genparams: 1\n")
+            writer_ready.set()
+            release.wait(timeout=60)
+
+    threading.Thread(target=stall, daemon=True).start()
+    try:
+        with pytest.raises(SchemaError, match=r"the pipe was not written whole within 0\.5 s"):
+            read_input_file(fifo, "schema")
+    finally:
+        release.set()
+    assert writer_ready.is_set()
+
+
+@pytest.mark.skipif(not Path("/dev/null").exists(), reason="needs /dev/null")
+def test_a_device_is_refused_at_once() -> None:
+    with pytest.raises(SchemaError) as caught:
+        read_input_file("/dev/null", "params file")
+    assert str(caught.value) == (
+        "/dev/null:1:1: cannot read params file: a character device, not a file or a pipe"
+    )
+
+
 # Run in a fresh interpreter: the peak (VmHWM) is the child's own, and an address-space
 # limit keeps a reader that does not stop from taking the machine's memory with it.
 ENDLESS = """
@@ -183,12 +236,14 @@ def test_endless_inputs_are_refused_in_bounded_memory(tmp_path: Path, good: Path
     assert result.returncode == 0, result.stderr
     outcome = json.loads(result.stdout)
     for (name, _argv, fifo), got in zip(cases, outcome["results"], strict=True):
-        file = fifo or "/dev/zero"
         what = COMMANDS[name.rsplit(" ", 1)[0]][1]
+        why = (
+            f"file is larger than {MAX_BYTES} bytes"
+            if fifo
+            else "a character device, not a file or a pipe"
+        )
         assert got["code"] == 2, got
-        assert got["stderr"] == (
-            f"{file}:1:1: cannot read {what}: file is larger than {MAX_BYTES} bytes\n"
-        ), got
+        assert got["stderr"] == f"{fifo or '/dev/zero'}:1:1: cannot read {what}: {why}\n", got
     assert outcome["peak_mb"] < 150, outcome["peak_mb"]
 
 
