@@ -19,6 +19,9 @@ from dataclasses import dataclass
 from genparams.paramsfile.params_reader import Section
 from genparams.paramsfile.ros_yaml import absolute, node_matches
 from genparams.runtime.core.naming import WILDCARD_ANY, WILDCARD_ONE
+from genparams.runtime.core.suggest import close_names, edit_distance, numbered_copies
+
+__all__ = ["Skipped", "edit_distance", "near_miss", "rcl_order", "sections_for"]
 
 
 @dataclass(frozen=True)
@@ -78,27 +81,4 @@ def near_miss(pattern: str, node: str) -> str | None:
 
 def _typo(written: str, meant: str) -> bool:
     """Close, and not numbered copies (robot_1 and robot_2, joint1 and joint2 are both real)."""
-    numbered = len(written) == len(meant) and all(
-        a == b or (a.isdigit() and b.isdigit()) for a, b in zip(written, meant, strict=True)
-    )
-    return close_names(written, meant) and not numbered
-
-
-def close_names(one: str, other: str) -> bool:
-    """Names one slip apart (two for long names): a typo, a swap of two letters."""
-    allowed = 1 if max(len(one), len(other)) < 8 else 2
-    return edit_distance(one, other) <= allowed
-
-
-def edit_distance(one: str, other: str) -> int:
-    """Edits (insert, delete, replace, swap of neighbours) that turn ``one`` into ``other``."""
-    rows = [list(range(len(other) + 1))]
-    for i, a in enumerate(one, start=1):
-        row = [i]
-        for j, b in enumerate(other, start=1):
-            cost = min(rows[-1][j] + 1, row[j - 1] + 1, rows[-1][j - 1] + (a != b))
-            if i > 1 and j > 1 and a == other[j - 2] and one[i - 2] == b:
-                cost = min(cost, rows[-2][j - 2] + 1)
-            row.append(cost)
-        rows.append(row)
-    return rows[-1][-1]
+    return close_names(written, meant) and not numbered_copies(written, meant)

@@ -23,17 +23,25 @@ class Params(ParamsView):
     __slots__ = ()
 
     @classmethod
-    def declare(cls, node: Node, prefix: str = "", *, publish_schema: bool = True) -> Self:
+    def declare(
+        cls, node: Node, prefix: str = "", *, publish_schema: bool = True, warn_unknown: bool = True
+    ) -> Self:
         """Declare every parameter on ``node`` (under ``prefix``) and return the live view.
 
         Raises ParameterDeclarationError listing every invalid or missing
         override; in that case nothing is declared. With ``publish_schema`` the
         node describes itself on ``~/genparams/schema`` (a latched std_msgs/String
-        of JSON, merged over every class declared on the node).
+        of JSON, merged over every class declared on the node). With ``warn_unknown``
+        the node warns for what rclpy would ignore in silence (runtime/node/ignored.py).
         """
         from genparams.runtime.node.binding import Binding
 
-        live = Binding.declare(cls, node, prefix).live
+        binding = Binding.declare(cls, node, prefix)
+        live = binding.live
+        if warn_unknown:
+            from genparams.runtime.node.ignored import warn_ignored
+
+            warn_ignored(node, prefix, sorted(binding.owned), binding.declares)
         if publish_schema:
             from genparams.runtime.node.schema_topic import publish_schema as publish
 

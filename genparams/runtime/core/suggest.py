@@ -1,5 +1,6 @@
 """The one "did you mean" of genparams: schema keys, validator names, rule expressions,
-remote sets and params-file entries all suggest a name the same way."""
+remote sets and params-file entries all suggest a name the same way; and the one measure of
+a slip between two names (node names of params-file sections)."""
 
 from __future__ import annotations
 
@@ -43,3 +44,30 @@ def did_you_mean_name(name: str, candidates: Iterable[str]) -> str:
         near = closest(last, leaves, cutoff=LEAF_CUTOFF)
         found = leaves[near] if near is not None else None
     return hint(found)
+
+
+def numbered_copies(one: str, other: str) -> bool:
+    """Names that differ only in digits (robot_1 and robot_2, joint1 and joint2): both real."""
+    return len(one) == len(other) and all(
+        a == b or (a.isdigit() and b.isdigit()) for a, b in zip(one, other, strict=True)
+    )
+
+
+def close_names(one: str, other: str) -> bool:
+    """Names one slip apart (two for long names): a typo, a swap of two letters."""
+    allowed = 1 if max(len(one), len(other)) < 8 else 2
+    return edit_distance(one, other) <= allowed
+
+
+def edit_distance(one: str, other: str) -> int:
+    """Edits (insert, delete, replace, swap of neighbours) that turn ``one`` into ``other``."""
+    rows = [list(range(len(other) + 1))]
+    for i, a in enumerate(one, start=1):
+        row = [i]
+        for j, b in enumerate(other, start=1):
+            cost = min(rows[-1][j] + 1, row[j - 1] + 1, rows[-1][j - 1] + (a != b))
+            if i > 1 and j > 1 and a == other[j - 2] and one[i - 2] == b:
+                cost = min(cost, rows[-2][j - 2] + 1)
+            row.append(cost)
+        rows.append(row)
+    return rows[-1][-1]
