@@ -385,10 +385,6 @@ def _frozen(value: Any) -> Any:
     return value
 
 
-def _members(entry: dict[str, Any]) -> dict[str, Any]:
-    return {k: v for k, v in entry.items() if k != "for_each"}
-
-
 def _base_type(gpl_type: str) -> tuple[str, int | None]:
     """``string_fixed_25`` -> (string, 25): a fixed size is a capacity, as in GPL."""
     match = _FIXED.fullmatch(gpl_type)
