@@ -10,12 +10,13 @@ from __future__ import annotations
 
 import re
 from collections.abc import Collection, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from genparams.errors import GenparamsError
 from genparams.gpl.validation import (
     Translated,
+    arguments,
     combination_refused,
     descriptor_range,
     element_bounds,
@@ -38,13 +39,16 @@ class GplError(GenparamsError):
     """The file is not a GPL parameter file at all."""
 
 
-@dataclass
+@dataclass(frozen=True)
 class CustomUse:
     """A custom validator the user writes in Python, and where the schema uses it."""
 
     function: str
     gpl_name: str
-    used_by: list[tuple[str, list[Any]]] = field(default_factory=list)  # (parameter, args)
+    used_by: tuple[tuple[str, tuple[Any, ...]], ...] = ()  # (parameter, args)
+
+    def also_by(self, parameter: str, args: tuple[Any, ...]) -> CustomUse:
+        return replace(self, used_by=(*self.used_by, (parameter, args)))
 
 
 @dataclass(frozen=True)
@@ -315,10 +319,9 @@ class _Importer:
             if translated.element_high is not None:
                 high = translated.element_high
             if translated.custom:
-                use = self.customs.setdefault(
-                    translated.custom, CustomUse(translated.custom, str(key))
-                )
-                use.used_by.append((".".join(ros_path), list(raw or []) if raw != [] else []))
+                use = self.customs.get(translated.custom, CustomUse(translated.custom, str(key)))
+                use = use.also_by(".".join(ros_path), tuple(arguments(raw)))
+                self.customs[translated.custom] = use
                 self.note(where, f"custom validator: write {self.checks_module}.{use.function}")
         limits = descriptor_range(validation, base)
         if limits is not None and not base.endswith("_array"):
@@ -380,10 +383,6 @@ def _frozen(value: Any) -> Any:
     if isinstance(value, list):
         return tuple(_frozen(v) for v in value)
     return value
-
-
-def _members(entry: dict[str, Any]) -> dict[str, Any]:
-    return {k: v for k, v in entry.items() if k != "for_each"}
 
 
 def _base_type(gpl_type: str) -> tuple[str, int | None]:
