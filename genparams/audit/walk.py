@@ -98,7 +98,7 @@ def read_batch(
     finding (the batch is read again one node at a time to tell which)."""
     try:
         read = graph.read_nodes(names, timeout)
-    except (TimeoutError, NodeAnswerError):
+    except Exception:  # whichever node it was, the others are read on
         read = {}
         for name in names:
             try:
@@ -107,6 +107,9 @@ def read_batch(
                 result.findings.append(Finding(name, UNREACHABLE, "", str(exc)))
             except NodeAnswerError as exc:
                 result.findings.append(Finding(name, BAD_ANSWER, "", str(exc)))
+            except Exception as exc:  # an answer rclpy itself could not take
+                detail = f"its answers cannot be read: {type(exc).__name__}: {exc}"
+                result.findings.append(Finding(name, BAD_ANSWER, "", detail))
     finally:
         for name in names:
             graph.forget(name)

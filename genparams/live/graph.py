@@ -30,6 +30,7 @@ from genparams.live.parameter_events import EventListener, EventRelay
 from genparams.live.schema_topics import SchemaTopics
 from genparams.live.services import (
     ParameterReader,
+    answers,
     read_all,
     read_named,
     send_once,
@@ -54,10 +55,21 @@ class Setter:
 
     def __init__(self, node: Node, target: str) -> None:
         self.node = node
+        self.primed = False  # see prime
         self.single = node.create_client(SetParameters, f"{target}/set_parameters")
         self.atomic = node.create_client(
             SetParametersAtomically, f"{target}/set_parameters_atomically"
         )
+
+    def prime(self, timeout: float) -> None:
+        """Send an empty set, again until answered: the node sets nothing and runs no
+        callback (rclpy and rclcpp set each listed parameter, and none is listed), and
+        once it answered, the path of the node's replies to these clients is matched, so
+        the real set, sent once, is not answered into the void."""
+        if not self.primed:
+            empty = SetParameters.Request(parameters=[])
+            answers([lambda: self.single.call_async(empty)], timeout)
+            self.primed = True
 
     def destroy(self) -> None:
         for client in (self.single, self.atomic):
@@ -274,8 +286,9 @@ class Graph:
         same one). StillWorkingError when the node has not answered within ``timeout``."""
         setter = self.setter(node_name)
         client = setter.atomic if atomic else setter.single
-        if not wait_ready([client], timeout):
+        if not wait_ready([setter.single, setter.atomic], timeout):
             raise TimeoutError(f"{node_name}: parameter services did not appear")
+        setter.prime(timeout)
         messages = [p.to_parameter_msg() for p in parameters]
         if atomic:
             request: Any = SetParametersAtomically.Request(parameters=messages)

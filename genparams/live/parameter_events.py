@@ -2,10 +2,12 @@
 
 Any node can publish ``ParameterEvent(node=/camera, gain=9.5)``, and a message does
 not tell who sent it. So an event is taken as "these names of that node changed":
-the names are read from the node over its ``get_parameters`` service, and listeners
-get the values the node answered. Reads go out from the executor without blocking
-it, one at a time per node; a flood of events queues at most ``MAX_QUEUED_READS``
-reads of at most ``MAX_EVENT_NAMES`` names per node, and only for nodes in the graph.
+the names said new or changed are read from the node over its ``get_parameters``
+service, and listeners get the values the node answered. Names said deleted pass
+as names only: the page reads the whole node again on those. Reads go out from the
+executor without blocking it, one at a time per node; a flood of events queues at
+most ``MAX_QUEUED_READS`` reads of at most ``MAX_EVENT_NAMES`` names per node, and
+only for nodes in the graph.
 """
 
 from __future__ import annotations
@@ -40,12 +42,27 @@ class Wanted:
 
     @property
     def names(self) -> list[str]:
-        return sorted(self.new | self.changed | self.deleted)
+        """The names to read: a value is shown only as the node answers it. Deleted names are
+        not read: the page reads the whole node again on a deletion (or a new name)."""
+        return sorted(self.new | self.changed)
+
+    @property
+    def count(self) -> int:
+        return len(self.new | self.changed | self.deleted)
 
     def merge(self, other: Wanted) -> None:
         self.new |= other.new
         self.changed |= other.changed
         self.deleted |= other.deleted
+
+    def halves(self) -> tuple[Wanted, Wanted]:
+        """Two reads of half the names each (the deletions go with the first)."""
+        names = self.names
+        first, second = set(names[: len(names) // 2]), set(names[len(names) // 2 :])
+        return (
+            Wanted(self.new & first, self.changed & first, self.deleted),
+            Wanted(self.new & second, self.changed & second, set()),
+        )
 
 
 @dataclass
@@ -101,7 +118,7 @@ class EventRelay:
             {p.name for p in event.deleted_parameters},
         )
         node = event.node
-        if not wanted.names or len(wanted.names) > MAX_EVENT_NAMES or not self.present(node):
+        if not wanted.count or wanted.count > MAX_EVENT_NAMES or not self.present(node):
             return
         with self.lock:
             reads = self.reads.setdefault(node, NodeReads())
@@ -122,6 +139,10 @@ class EventRelay:
             wanted = reads.queued[0]
             reads.sent = time.monotonic()
         names = wanted.names
+        if not names:  # deletions only: nothing to read
+            self.dispatch(held_event(node, wanted, [], []))
+            self.finish(node)
+            return
         try:
             future = self.reader(node).get_call(names)()
         except Exception:  # the node's clients were let go meanwhile: the read is dropped
@@ -130,17 +151,39 @@ class EventRelay:
         future.add_done_callback(lambda done: self.answered(node, wanted, names, done))
 
     def answered(self, node: str, wanted: Wanted, names: list[str], future: Future) -> None:
+        """Dispatch what the node answered. rclpy answers a get naming any name it does not
+        hold with no values at all: such a read is asked again in halves, and a name alone
+        that still gets none is left out (a forged name, or one the node no longer holds)."""
         try:
-            values = checked_values(node, names, future.result().values)
-        except (NodeAnswerError, AttributeError, Exception):  # any answer: a dropped event
-            values = None
+            answered = list(future.result().values)
+        except Exception:  # a cancelled or failed call: a dropped event
+            answered = None
         with self.lock:
             reads = self.reads.get(node)
-            current = reads is not None and reads.queued and reads.queued[0] is wanted
+            current = bool(reads and reads.queued and reads.queued[0] is wanted)
+            if current and reads is not None and answered == [] and len(names) > 1:
+                reads.queued[0:1] = wanted.halves()
+                reads.sent = None
+                again = True
+            else:
+                again = False
         if not current:
             return  # given up by the sweep meanwhile
+        if again:
+            self.send(node)
+            return
+        values: list[Any] | None = None
+        if answered == [] and len(names) == 1:
+            names, values = [], []
+        elif answered is not None:
+            try:
+                values = checked_values(node, names, answered)
+            except NodeAnswerError:
+                values = None
         if values is not None:
-            self.dispatch(held_event(node, wanted, names, values))
+            event = held_event(node, wanted, names, values)
+            if event["new"] or event["changed"] or event["deleted"]:
+                self.dispatch(event)
         self.finish(node)
 
     def finish(self, node: str) -> None:
@@ -163,14 +206,12 @@ class EventRelay:
 
 
 def held_event(node: str, wanted: Wanted, names: list[str], values: list[Any]) -> dict[str, Any]:
-    """The event listeners get: each name with the value the node holds (unset: deleted)."""
+    """The event listeners get: each name read with the value the node holds, and the names
+    said deleted (the page reads the whole node again for those)."""
     new: dict[str, Any] = {}
     changed: dict[str, Any] = {}
-    deleted: list[str] = []
+    deleted = sorted(wanted.deleted)
     for name, value in zip(names, values, strict=True):
-        if value.type == NOT_SET:
-            if name in wanted.deleted:
-                deleted.append(name)
-            continue
-        (new if name in wanted.new else changed)[name] = python_value(value)
+        if value.type != NOT_SET:
+            (new if name in wanted.new else changed)[name] = python_value(value)
     return {"kind": "parameters", "node": node, "new": new, "changed": changed, "deleted": deleted}

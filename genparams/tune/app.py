@@ -103,7 +103,8 @@ class TuneApp:
     async def nodes(self, request: Request) -> Response:
         def listed() -> list[dict[str, Any]]:
             found = []
-            for n in filter(self.shown, self.graph.node_names(hidden=self.include_hidden)):
+            hidden = self.include_hidden or bool(self.only_nodes)  # a node named is listed
+            for n in filter(self.shown, self.graph.node_names(hidden=hidden)):
                 schema, problem = self.graph.schema_state(n)
                 found.append(
                     {"name": n, "genparams": schema is not None, "schema_problem": problem}

@@ -33,7 +33,7 @@ def test_forged_parameter_events_never_reach_the_listeners() -> None:
     seen = threading.Event()
 
     def listener(event: dict[str, Any]) -> None:
-        if event.get("node") == TARGET and event.get("kind") == "parameters":
+        if event.get("node") == TARGET and "gain" in event.get("changed", {}):
             got.append(event)
             if len(got) >= 3:
                 seen.set()
@@ -44,7 +44,7 @@ def test_forged_parameter_events_never_reach_the_listeners() -> None:
             eventually(lambda: seen.is_set())
     finally:
         graph.close()
-    values = [event["changed"].get("gain") for event in got]
+    values = [event["changed"]["gain"] for event in got]
     assert FORGED_GAIN not in values, got
     assert set(values) == {1.5}, got
 

@@ -5,6 +5,8 @@ nodes that exist, hidden nodes only when asked for, and no pattern that costs to
   camera's schema is not believed (the page shows why), and the audit reports the name.
 - One node publishes the schema topics of 40 nodes that do not exist: none is followed.
 - A node named ``_hidden_...`` is listed by the page and the audit only when asked for.
+- A node publishes a schema whose pattern multiplies out (``(?:x{400}){400}``): its schema is a
+  problem, for the page and the audit, told before anything compiles the pattern.
 """
 
 from __future__ import annotations
@@ -25,6 +27,8 @@ CAM, GOOD = f"/{unique('trust_cam')}", f"/{unique('trust_good')}"
 GHOSTS = unique("trust_ghosts")
 HIDDEN = f"/_{unique('trust_hidden')}"
 GHOST_COUNT = 40
+COSTLY = f"/{unique('trust_costly')}"
+COSTLY_PATTERN = "(?:x{400}){400}"
 
 
 @pytest.fixture(scope="module")
@@ -32,7 +36,13 @@ def graph(tmp_path_factory: pytest.TempPathFactory) -> Iterator[None]:
     workdir = tmp_path_factory.mktemp("trust")
     forged = camera_message(CAM, workdir)
     forged["hash"] = "forged"
-    twin = [{"node": CAM[1:], "topic": CAM + SCHEMA_TOPIC_SUFFIX, "text": json.dumps(forged)}]
+    costly = camera_message(COSTLY, workdir)
+    robot_name = next(p for p in costly["classes"][0]["parameters"] if p["name"] == "robot_name")
+    robot_name["validators"] = [["pattern", COSTLY_PATTERN]]
+    twin = [
+        {"node": CAM[1:], "topic": CAM + SCHEMA_TOPIC_SUFFIX, "text": json.dumps(forged)},
+        {"node": COSTLY[1:], "topic": COSTLY + SCHEMA_TOPIC_SUFFIX, "text": json.dumps(costly)},
+    ]
     spec_file = workdir / "twin.json"
     spec_file.write_text(json.dumps(twin), encoding="utf-8")
     with (
@@ -116,3 +126,14 @@ def test_the_audit_lists_hidden_nodes_only_when_asked(graph: None) -> None:
     assert HIDDEN not in json.loads(plain.stdout)["without_schema"], plain.stderr
     asked = audit("--format", "json", "--include-hidden", settle=3.0)
     assert HIDDEN in json.loads(asked.stdout)["without_schema"], asked.stderr
+
+
+def test_a_pattern_that_multiplies_out_is_a_schema_problem(server: TuneServer) -> None:
+    node = eventually(lambda: listed(server).get(COSTLY, {}).get("schema_problem"))
+    assert "expands to more than" in str(node) and COSTLY_PATTERN in str(node)
+    done = audit("--format", "json", COSTLY)
+    assert "Traceback" not in done.stderr, done.stderr
+    details = [
+        f["detail"] for f in json.loads(done.stdout)["findings"] if f["kind"] == "bad-schema"
+    ]
+    assert any("expands to more than" in detail for detail in details), details
