@@ -26,7 +26,7 @@ from pathlib import Path
 import pytest
 from rclpy.parameter import Parameter
 
-from tests.build_support import VENV_BIN, node_process, tool_env, wait_for_node
+from tests.build_support import node_process, space_free_tools, tool_env, wait_for_node
 from tests.docs_site.pages import DOCS, Block, blocks, shell_lines
 from tests.support import RosHarness, unique_name
 
@@ -107,28 +107,6 @@ def session(page_steps: list[Step], top: Path, logs: Path) -> str:
             if line.strip() and not _NOT_RUN.match(line):
                 lines.append(script_line(line, log))
     return "\n".join(lines) + "\n"
-
-
-def space_free_tools(tmp_path: Path) -> Path:
-    """A folder for PATH whose `python3` and `colcon` run the venv by a path without spaces.
-
-    colcon writes the path of the interpreter that ran it into install/setup.sh and runs it
-    there unquoted, so a clone whose path holds a space would break the page's build; a
-    user's colcon (a ROS 2 install's) has no such path.
-    """
-    venv = tmp_path / "venv"
-    venv.symlink_to(VENV_BIN.parent, target_is_directory=True)
-    tools = tmp_path / "tools"
-    tools.mkdir()
-    python = venv / "bin" / "python3"
-    # `python3` from the venv reached through the link: it finds its pyvenv.cfg there.
-    (tools / "python3").write_text(f'#!/bin/sh\nexec {shlex.quote(str(python))} "$@"\n')
-    (tools / "python3").chmod(0o755)
-    colcon = tools / "colcon"
-    main = "import sys; from colcon_core.command import main; sys.exit(main())"
-    colcon.write_text(f'#!/bin/sh\nexec {shlex.quote(str(python))} -c {shlex.quote(main)} "$@"\n')
-    colcon.chmod(0o755)
-    return tools
 
 
 def test_the_page_is_read_as_expected() -> None:
