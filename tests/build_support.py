@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import shlex
 import shutil
 import signal
 import subprocess
@@ -28,6 +29,32 @@ def tool_env(**extra: str) -> dict[str, str]:
     env.pop("PYTHONPATH", None)
     env.update(extra)
     return env
+
+
+def space_free_tools(tmp_path: Path) -> Path:
+    """A folder for PATH whose `python`, `python3` and `colcon` run the venv by a path
+    without spaces, for the builds that write it into a workspace.
+
+    colcon writes the path of the interpreter that ran it into install/setup.sh and runs it
+    there unquoted, so a venv in a clone whose path holds a space would break every
+    workspace it builds; a user's colcon (a ROS 2 install's) has no such path.
+    """
+    venv = tmp_path / "venv"
+    tools = tmp_path / "tools"
+    if tools.is_dir():
+        return tools
+    venv.symlink_to(VENV_BIN.parent, target_is_directory=True)
+    tools.mkdir()
+    python = venv / "bin" / "python3"
+    # The venv's interpreter reached through the link: it finds its pyvenv.cfg there.
+    for name in ("python", "python3"):
+        (tools / name).write_text(f'#!/bin/sh\nexec {shlex.quote(str(python))} "$@"\n')
+        (tools / name).chmod(0o755)
+    colcon = tools / "colcon"
+    main = "import sys; from colcon_core.command import main; sys.exit(main())"
+    colcon.write_text(f'#!/bin/sh\nexec {shlex.quote(str(python))} -c {shlex.quote(main)} "$@"\n')
+    colcon.chmod(0o755)
+    return tools
 
 
 def run(

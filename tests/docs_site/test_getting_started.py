@@ -26,7 +26,7 @@ from pathlib import Path
 import pytest
 from rclpy.parameter import Parameter
 
-from tests.build_support import node_process, tool_env, wait_for_node
+from tests.build_support import node_process, space_free_tools, tool_env, wait_for_node
 from tests.docs_site.pages import DOCS, Block, blocks, shell_lines
 from tests.support import RosHarness, unique_name
 
@@ -127,6 +127,7 @@ def test_the_page_runs_from_an_empty_folder(tmp_path: Path, ros: RosHarness) -> 
     logs.mkdir()
     page_steps = steps(PAGE.read_text(encoding="utf-8"))
     env = tool_env()
+    env["PATH"] = f"{space_free_tools(tmp_path)}{os.pathsep}{env['PATH']}"
     assert env["ROS_DOMAIN_ID"] != "42" and env["ROS_AUTOMATIC_DISCOVERY_RANGE"] == "LOCALHOST"
     env.pop("VIRTUAL_ENV", None)
     ran = subprocess.run(

@@ -7,7 +7,7 @@ find_package(genparams), in every install layout colcon offers.
 
 from __future__ import annotations
 
-import sys
+import os
 from pathlib import Path
 
 import pytest
@@ -19,22 +19,14 @@ from tests.build_support import (
     copy_example,
     node_process,
     run,
+    space_free_tools,
     tool_env,
     tree_snapshot,
     wait_for_node,
 )
 from tests.support import RosHarness, unique_name
 
-pytestmark = [
-    pytest.mark.slow,
-    # colcon writes the interpreter's path into install/local_setup.sh unquoted, so sourcing
-    # it fails when that path holds a space ("/tmp/gp: not found"): ROS workspaces need
-    # an interpreter path without spaces.
-    pytest.mark.skipif(
-        any(c.isspace() for c in sys.executable),
-        reason="colcon's setup scripts cannot run an interpreter whose path holds a space",
-    ),
-]
+pytestmark = pytest.mark.slow
 
 LAYOUTS = {
     "isolated": [],
@@ -67,6 +59,8 @@ def workspace_with(tmp_path: Path, *packages: str) -> Path:
 
 def colcon_build(workspace: Path, *options: str) -> str:
     env = tool_env(COLCON_HOME=str(workspace / ".colcon"))
+    # The interpreter colcon writes into install/setup.sh, by a path without spaces.
+    env["PATH"] = f"{space_free_tools(workspace.parent)}{os.pathsep}{env['PATH']}"
     completed = run(
         ["colcon", "build", "--base-paths", "src", "--event-handlers", "console_direct+", *options],
         workspace,

@@ -7,6 +7,7 @@ contracts need no exception for the root.
 
 from __future__ import annotations
 
+import re
 import tomllib
 
 import grimp
@@ -32,3 +33,10 @@ def test_the_root_reports_the_version_of_its_one_source() -> None:
     assert genparams.__version__ == __version__
     hatch = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["hatch"]["version"]
     assert hatch == {"path": "genparams/_version.py"}
+
+
+def test_the_changelog_names_this_version_as_the_newest_release() -> None:
+    changelog = (ROOT / "CHANGELOG.md").read_text(encoding="utf-8")
+    releases = re.findall(r"^## \[(\d+\.\d+\.\d+)\] - \d{4}-\d{2}-\d{2}$", changelog, re.MULTILINE)
+    assert releases[0] == __version__
+    assert "## [Unreleased]" in changelog.split(f"## [{__version__}]")[0]
