@@ -6,8 +6,10 @@ import argparse
 import sys
 from pathlib import Path
 
+from genparams.commands._launch import add_launch_arguments
 from genparams.errors import CommandError
 from genparams.paramsfile.node_rules import NodeRule
+from genparams.paramsfile.params_reader import ParamsDocument
 from genparams.paramsfile.ros_yaml import absolute, node_name_problem
 
 
@@ -39,6 +41,13 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
         metavar="FILE",
         help="a deployment manifest: its rules across nodes are checked on the running graph",
     )
+    parser.add_argument(
+        "--launch",
+        type=Path,
+        metavar="LAUNCH",
+        help="a launch file: each node it starts is compared with the parameters it gives it",
+    )
+    add_launch_arguments(parser)
     parser.add_argument("--format", choices=("text", "json"), default="text")
     parser.add_argument(
         "--settle",
@@ -71,6 +80,8 @@ def run(args: argparse.Namespace) -> int:
         documents = read_deployment(args.params_file)
     except DeploymentError as exc:  # its problems name their file and place
         raise CommandError(exc) from None
+    if args.launch is not None:
+        documents = [*documents, *_launch_documents(args)]
     rules = _rules(args.manifest)
     graph = Graph("genparams_audit")
     try:
@@ -104,3 +115,18 @@ def _rules(manifest: Path | None) -> tuple[NodeRule, ...]:
         return read_manifest(manifest).rules
     except SchemaError as exc:
         raise CommandError(exc) from None
+
+
+def _launch_documents(args: argparse.Namespace) -> list[ParamsDocument]:
+    """What the launch file gives each node it starts, as sections named for that node."""
+    from genparams.commands._launch import load_launch
+    from genparams.launch.deployment import for_node, node_documents
+
+    documents: list[ParamsDocument] = []
+    for node in load_launch(args.launch, args).nodes:
+        if node.full_name:
+            given, unreadable = node_documents(node)
+            if unreadable:
+                raise CommandError(*map(str, unreadable))
+            documents.extend(for_node(given, node.full_name))
+    return documents
