@@ -48,6 +48,18 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
         help="a launch file: each node it starts is compared with the parameters it gives it",
     )
     add_launch_arguments(parser)
+    parser.add_argument(
+        "--write",
+        action="store_true",
+        help="keep the nodes' values: write each that differs from the --params-file back at "
+        "its place in that file",
+    )
+    parser.add_argument(
+        "--new-values",
+        type=Path,
+        metavar="FILE",
+        help="with --write: where values no file gave (off their default) go",
+    )
     parser.add_argument("--format", choices=("text", "json"), default="text")
     parser.add_argument(
         "--settle",
@@ -80,6 +92,9 @@ def run(args: argparse.Namespace) -> int:
         documents = read_deployment(args.params_file)
     except DeploymentError as exc:  # its problems name their file and place
         raise CommandError(exc) from None
+    if args.write and not args.params_file:
+        raise CommandError("genparams audit: --write needs the --params-file to write into")
+    kept_documents = list(documents)
     if args.launch is not None:
         documents = [*documents, *_launch_documents(args)]
     rules = _rules(args.manifest)
@@ -102,6 +117,10 @@ def run(args: argparse.Namespace) -> int:
 
         result.findings.extend(rule_findings(rules, result.values))
     sys.stdout.write(json_report(result) if args.format == "json" else text_report(result))
+    if args.write:
+        from genparams.commands._keep import keep_audited
+
+        keep_audited(result, kept_documents, args.new_values)
     return 1 if result.failing else 0
 
 
