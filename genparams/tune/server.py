@@ -5,6 +5,7 @@ from __future__ import annotations
 import secrets
 import threading
 import time
+from pathlib import Path
 
 import uvicorn
 
@@ -34,6 +35,7 @@ class TuneServer:
         token: str | None = None,
         graph: Graph | None = None,
         trusted_packages: tuple[str, ...] = (),
+        keep: tuple[tuple[Path, ...], Path | None] = ((), None),  # params files, new values
     ) -> None:
         if token is None:
             token = new_token()
@@ -50,6 +52,7 @@ class TuneServer:
             nodes=nodes,
             host=host,
             trusted_packages=trusted_packages,
+            keep=keep,
         )
         config = uvicorn.Config(
             self.app.starlette(),
