@@ -36,6 +36,9 @@ def keep_audited(
         text = new_values.read_text(encoding="utf-8")
         documents.append(read_params_file(text, str(new_values)))
     changes = plan(nodes, documents, None if new_values is None else str(new_values))
+    if not nodes:
+        report("kept: no node was read, nothing to write")
+        return
     if not changes:
         report("kept: nothing to write, the files hold every value")
         return
