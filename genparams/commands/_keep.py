@@ -10,6 +10,7 @@ from genparams.audit.walk import AuditResult
 from genparams.commands._common import report
 from genparams.errors import CommandError
 from genparams.integration.writing import write_all
+from genparams.launch.reader import is_launch_file
 from genparams.outputs.keep_values import KeepError, NodeValues, apply, plan, read_texts
 from genparams.paramsfile.params_reader import ParamsDocument, read_params_file
 
@@ -35,7 +36,13 @@ def keep_audited(
     if new_values is not None and new_values.is_file():
         text = new_values.read_text(encoding="utf-8")
         documents.append(read_params_file(text, str(new_values)))
-    changes = plan(nodes, documents, None if new_values is None else str(new_values))
+    planned = plan(nodes, documents, None if new_values is None else str(new_values))
+    # A launch file's own values (a dict in parameters=[...], a <param value=/>) are code:
+    # they are named, never rewritten.
+    changes = [c for c in planned if not is_launch_file(Path(c.file))]
+    report(
+        *(f"kept: not written, a launch file's own value: {c}" for c in planned if c not in changes)
+    )
     if not nodes:
         report("kept: no node was read, nothing to write")
         return

@@ -92,9 +92,8 @@ def run(args: argparse.Namespace) -> int:
         documents = read_deployment(args.params_file)
     except DeploymentError as exc:  # its problems name their file and place
         raise CommandError(exc) from None
-    if args.write and not args.params_file:
-        raise CommandError("genparams audit: --write needs the --params-file to write into")
-    kept_documents = list(documents)
+    if args.write and not args.params_file and args.launch is None:
+        raise CommandError("genparams audit: --write needs a --params-file (or --launch)")
     if args.launch is not None:
         documents = [*documents, *_launch_documents(args)]
     rules = _rules(args.manifest)
@@ -120,7 +119,7 @@ def run(args: argparse.Namespace) -> int:
     if args.write:
         from genparams.commands._keep import keep_audited
 
-        keep_audited(result, kept_documents, args.new_values)
+        keep_audited(result, documents, args.new_values)
     return 1 if result.failing else 0
 
 
