@@ -20,6 +20,7 @@ from genparams.commands import (
     import_node,
     import_rclpy,
     json_schema,
+    launch_nodes,
     tune,
     validate,
 )
@@ -35,6 +36,7 @@ COMMANDS = (
     check_params,
     check_deployment,
     explain,
+    launch_nodes,
     tune,
     audit,
     import_gpl,

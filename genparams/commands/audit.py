@@ -7,8 +7,10 @@ import sys
 from pathlib import Path
 
 from genparams.audit.findings import KINDS
+from genparams.commands._launch import add_launch_arguments
 from genparams.errors import CommandError
 from genparams.paramsfile.node_rules import NodeRule
+from genparams.paramsfile.params_reader import ParamsDocument
 from genparams.paramsfile.ros_yaml import absolute, node_name_problem
 
 
@@ -62,6 +64,25 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
         action="store_true",
         help="audit hidden nodes too (names starting with _, such as the ROS CLI's daemon)",
     )
+    parser.add_argument(
+        "--launch",
+        type=Path,
+        metavar="LAUNCH",
+        help="a launch file: each node it starts is compared with the parameters it gives it",
+    )
+    add_launch_arguments(parser)
+    parser.add_argument(
+        "--write",
+        action="store_true",
+        help="keep the nodes' values: write each that differs from the --params-file back at "
+        "its place in that file",
+    )
+    parser.add_argument(
+        "--new-values",
+        type=Path,
+        metavar="FILE",
+        help="with --write: where values no file gave (off their default) go",
+    )
     parser.add_argument("--format", choices=("text", "json"), default="text")
     parser.add_argument(
         "--settle",
@@ -94,6 +115,10 @@ def run(args: argparse.Namespace) -> int:
         documents = read_deployment(args.params_file)
     except DeploymentError as exc:  # its problems name their file and place
         raise CommandError(exc) from None
+    if args.write and not args.params_file and args.launch is None:
+        raise CommandError("genparams audit: --write needs a --params-file (or --launch)")
+    if args.launch is not None:
+        documents = [*documents, *_launch_documents(args)]
     rules = _rules(args.manifest)
     graph = Graph("genparams_audit")
     try:
@@ -120,6 +145,10 @@ def run(args: argparse.Namespace) -> int:
         if (not args.only or f.kind in args.only) and f.kind not in args.skip
     ]
     sys.stdout.write(json_report(result) if args.format == "json" else text_report(result))
+    if args.write:
+        from genparams.commands._keep import keep_audited
+
+        keep_audited(result, documents, args.new_values)
     return 1 if result.failing else 0
 
 
@@ -133,3 +162,18 @@ def _rules(manifest: Path | None) -> tuple[NodeRule, ...]:
         return read_manifest(manifest).rules
     except SchemaError as exc:
         raise CommandError(exc) from None
+
+
+def _launch_documents(args: argparse.Namespace) -> list[ParamsDocument]:
+    """What the launch file gives each node it starts, as sections named for that node."""
+    from genparams.commands._launch import load_launch
+    from genparams.launch.deployment import for_node, node_documents
+
+    documents: list[ParamsDocument] = []
+    for node in load_launch(args.launch, args).nodes:
+        if node.full_name:
+            given, unreadable = node_documents(node)
+            if unreadable:
+                raise CommandError(*map(str, unreadable))
+            documents.extend(for_node(given, node.full_name))
+    return documents

@@ -7,9 +7,11 @@ from pathlib import Path
 from typing import Any
 
 from genparams.commands._common import emit
+from genparams.commands._launch import add_launch_arguments, launched_node, packages
 from genparams.commands._schemas import add_schema_arguments, load_bounds
 from genparams.commands.check_params import add_known_argument
 from genparams.errors import CommandError
+from genparams.launch.deployment import node_documents, package_schema
 from genparams.outputs.explain_text import text_report, yaml_report
 from genparams.paramsfile.explain import RuleError, explain, overrides_document
 from genparams.paramsfile.manifest import read_manifest
@@ -42,6 +44,14 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
     parser.add_argument(
         "--manifest", type=Path, metavar="FILE", help="take the node's schemas here"
     )
+    parser.add_argument(
+        "--launch",
+        type=Path,
+        metavar="LAUNCH",
+        help="the launch file that starts the node: its parameters come first, its package's "
+        "schema is used when no other is given",
+    )
+    add_launch_arguments(parser)
     add_known_argument(parser)
     parser.add_argument("--format", choices=("text", "yaml"), default="text")
     parser.add_argument("-o", "--output", type=Path, metavar="FILE")
@@ -65,8 +75,17 @@ def run(args: argparse.Namespace) -> int:
                 specs += [(ref.path, ref.prefix) for ref in entry.schemas]
                 known += entry.known
                 break
-    bounds = load_bounds(specs)
     documents = _documents(args.inputs)
+    if args.launch is not None:
+        launched = launched_node(args.launch, args, node)
+        from_launch, unreadable = node_documents(launched)
+        if unreadable:
+            raise CommandError(*map(str, unreadable))
+        documents = [*from_launch, *documents]
+        schema = package_schema(launched, packages(args))
+        if not specs and schema is not None:
+            specs.append((schema, ""))
+    bounds = load_bounds(specs)
     explanation = explain(bounds, documents, node, known)
     text = yaml_report(explanation) if args.format == "yaml" else text_report(explanation)
     emit(text, args.output)

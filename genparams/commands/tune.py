@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import os
+from pathlib import Path
 
 from genparams.errors import CommandError
 from genparams.paramsfile.ros_yaml import absolute, node_name_problem
@@ -56,6 +57,20 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
         " messages name in the page's checks; others are checked by the node on apply"
         " (repeatable)",
     )
+    parser.add_argument(
+        "--params-file",
+        action="append",
+        default=[],
+        type=Path,
+        metavar="FILE",
+        help='where "Keep these values" writes each value back, at its place (repeatable)',
+    )
+    parser.add_argument(
+        "--new-values",
+        type=Path,
+        metavar="FILE",
+        help='where "Keep these values" writes values no --params-file gave',
+    )
     parser.set_defaults(run=run)
 
 
@@ -86,6 +101,7 @@ def run(args: argparse.Namespace) -> int:
         token=token,
         trusted_packages=tuple(args.trust_package),
         include_hidden=args.include_hidden,
+        keep=(tuple(args.params_file), args.new_values),
     )
     try:
         print(f"genparams tune: serving {server.start()}", flush=True)

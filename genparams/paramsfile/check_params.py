@@ -84,8 +84,6 @@ def check_files(
     if sections_needed and nodes and not any(d.problems and not d.sections for d in documents):
         unnamed = _unnamed(documents, per_node)
         problems.extend(_unreached(documents, unnamed))
-        # A node no section reaches: a list of its required parameters adds only noise.
-        per_node = [(n, s) for n, s in per_node if s]
     if any(d.problems and not d.sections for d in documents):
         per_node = []  # nothing could be read: a list of every required parameter adds only noise
     file = documents[0].file if documents else "-"

@@ -198,7 +198,7 @@ def _check_same(rule: NodeRule, values: NodeValues) -> tuple[str | None, str | N
     groups: list[tuple[Any, list[str]]] = []
     for node, held in holding.items():
         for value, nodes in groups:
-            if _equal(value, held.value):
+            if equal_values(value, held.value):
                 nodes.append(node)
                 break
         else:
@@ -237,13 +237,13 @@ def _at(name: str, held: NodeValue) -> str:
     return f"{name} from {held.place}" if held.place else name
 
 
-def _equal(one: Any, other: Any) -> bool:
+def equal_values(one: Any, other: Any) -> bool:
     """Equal as ROS holds them: of one type (a ``true`` is not a ``1``), then the runtime's
     equality (NaN equals NaN)."""
     if type_name(one) != type_name(other):
         return False
     if isinstance(one, list | tuple):
-        return len(one) == len(other) and all(map(_equal, one, other))
+        return len(one) == len(other) and all(map(equal_values, one, other))
     return bool(same_value(one, other))
 
 

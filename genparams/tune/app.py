@@ -28,13 +28,16 @@ from genparams.tune.bodies import RequestError, edits, node_name, set_request
 from genparams.tune.checking import Checker
 from genparams.tune.events import EventStreams
 from genparams.tune.json_response import JSONResponse
+from genparams.tune.keep import KEEP_PATH, Keeper
 from genparams.tune.params_dump import params_file_text
 from genparams.tune.places import entry_places
 from genparams.tune.security import Gate, Policy
 
 STATIC = Path(__file__).resolve().parent / "static"
 SET_WAIT_SECONDS = 5.0  # a set not answered by then is told as still working (202), not failed
-WRITES = frozenset({"/api/set"})  # /api/check changes nothing: a read-only page may ask it
+WRITES = frozenset(
+    {"/api/set", KEEP_PATH}
+)  # /api/check changes nothing: a read-only page may ask it
 
 
 class TuneApp:
@@ -55,9 +58,11 @@ class TuneApp:
         host: str = "127.0.0.1",
         trusted_packages: tuple[str, ...] = (),
         include_hidden: bool = False,
+        keep: tuple[tuple[Path, ...], Path | None] = ((), None),
     ) -> None:
         self.graph = graph
         self.include_hidden = include_hidden
+        self.keeper = Keeper(self, *keep)
         self.policy = Policy(token=token, bound_host=host, read_only=read_only, writes=WRITES)
         self.checker = Checker(graph.node, trusted_packages)
         self.read_only = read_only
@@ -75,6 +80,7 @@ class TuneApp:
                 Route("/api/check", self.check, methods=["POST"]),
                 Route("/api/params-file", self.params_file),
                 Route("/api/events", self.events),
+                *self.keeper.routes(),
                 Mount("/static", StaticFiles(directory=STATIC), name="static"),
             ],
             exception_handlers={RequestError: bad_request, NodeAnswerError: bad_answer},

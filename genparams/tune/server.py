@@ -5,6 +5,7 @@ from __future__ import annotations
 import secrets
 import threading
 import time
+from pathlib import Path
 
 import uvicorn
 
@@ -36,6 +37,7 @@ class TuneServer:
         graph: Graph | None = None,
         trusted_packages: tuple[str, ...] = (),
         include_hidden: bool = False,
+        keep: tuple[tuple[Path, ...], Path | None] = ((), None),  # params files, new values
     ) -> None:
         if token is None:
             token = new_token()
@@ -53,6 +55,7 @@ class TuneServer:
             host=host,
             trusted_packages=trusted_packages,
             include_hidden=include_hidden,
+            keep=keep,
         )
         config = uvicorn.Config(
             self.app.starlette(),

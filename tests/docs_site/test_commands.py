@@ -49,7 +49,7 @@ def cases() -> list[Any]:
 def workspace(tmp_path: Path) -> Path:
     root = tmp_path / "repo"
     shutil.copytree(ROOT / "examples", root / "examples", ignore=shutil.ignore_patterns("build"))
-    for folder in ("cases", "bad_schemas", "gpl", "rclpy_import"):
+    for folder in ("cases", "bad_schemas", "gpl", "rclpy_import", "launch"):
         shutil.copytree(ROOT / "tests" / folder, root / "tests" / folder)
     (tmp_path / "out").mkdir()
     return root

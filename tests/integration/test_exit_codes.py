@@ -34,6 +34,7 @@ OUT_OF_RANGE = CHECKS / "out_of_range" / "params.yaml"
 GPL = ROOT / "tests" / "gpl" / "sources" / "conveyor_controller_parameters.yaml"
 RCLPY_NODES = ROOT / "tests" / "rclpy_import" / "nodes"
 NODE = "/camera/camera_driver"
+LAUNCH = ROOT / "tests" / "launch" / "corpus" / "camera_driver" / "launch" / "camera.launch.yaml"
 
 
 @dataclass(frozen=True)
@@ -120,6 +121,9 @@ RUNS = [
         "explain", 1, "out of range", NODE, "--schema", "@SCHEMA", "--params-file", "@OUT_OF_RANGE"
     ),
     _run("explain", 2, "an invalid node name", "a b", "--schema", "@SCHEMA"),
+    _run("launch-nodes", 0, "a launch file", str(LAUNCH)),
+    _run("launch-nodes", 2, "a missing launch file", "@MISSING"),
+    _run("launch-nodes", 2, "an --arg without :=", str(LAUNCH), "--arg", "fps"),
     _run("tune", 2, "an invalid node name", "a b"),
     _run("tune", 2, "a port that is not a number", "--port", "http"),
     _run("audit", 2, "an invalid node name", "a b"),

@@ -67,6 +67,8 @@ def test_a_wrong_value_is_reported_once_and_its_rules_are_skipped() -> None:
 
 def test_a_node_without_a_section_misses_its_required_values_at_the_top() -> None:
     assert _report(["limit: 2"], ["/drive"], section="/other") == [
+        "p.yaml:1:1: /drive: no section of the file names this node, so nothing checks it; "
+        "sections seen: /other",
         "p.yaml:1:1: limit: required parameter is not set for /drive "
         "(it has no default: add limit: <int>)",
         "p.yaml:1:1: /other: skipped: for another node (not /drive)",

@@ -38,7 +38,9 @@ def test_a_node_no_section_reaches_fails_and_names_what_it_saw(
     assert out.splitlines() == [
         f"{tmp_path / 'params.yaml'}:1:1: /multi_cam: no section of the file names this node, "
         "so nothing checks it; sections seen: /robot/multi_cam, /robot/lidar "
-        "(did you mean /robot/multi_cam?)"
+        "(did you mean /robot/multi_cam?)",
+        f"{tmp_path / 'params.yaml'}:1:1: serial: required parameter is not set for /multi_cam "
+        "(it has no default: add serial: <string>)",
     ]
 
 

@@ -76,3 +76,50 @@ def test_rules_that_hold_exit_0(running: None, tmp_path: Path) -> None:
     done = run_audit("--manifest", str(manifest(tmp_path, rules)), SLOW, FAST)
     assert done.returncode == 0, done.stdout + done.stderr
     assert "0 violation(s)" in done.stdout
+
+
+def test_audit_compares_each_node_with_its_launch_file(running: None, tmp_path: Path) -> None:
+    launch = tmp_path / "cameras.launch.xml"
+    launch.write_text(
+        "<launch>\n"
+        f'  <node pkg="camera_driver" exec="camera_node" name="{SLOW[1:]}">\n'
+        '    <param name="camera.fps" value="15.0"/>\n'
+        "  </node>\n"
+        f'  <node pkg="camera_driver" exec="camera_node" name="{FAST[1:]}">\n'
+        '    <param name="camera.fps" value="20.0"/>\n'
+        "  </node>\n"
+        "</launch>\n",
+        encoding="utf-8",
+    )
+    done = run_audit("--format", "json", "--launch", str(launch), SLOW, FAST)
+    assert done.returncode == 0, done.stdout + done.stderr
+    drift = [
+        (f["node"], f["parameter"], f["expected"], f["actual"], f["detail"])
+        for f in json.loads(done.stdout)["findings"]
+        if f["kind"] == "drift-from-file"
+    ]
+    assert drift == [(FAST, "camera.fps", 20.0, 30.0, f"differs from {launch}:6:5")]
+
+
+def test_audit_write_keeps_values_in_the_files_a_launch_file_names(
+    running: None, tmp_path: Path
+) -> None:
+    params = tmp_path / "cams.yaml"
+    params.write_text("/**:\n  ros__parameters:\n    camera:\n      fps: 20.0  # bench\n")
+    launch = tmp_path / "cams.launch.xml"
+    launch.write_text(
+        f'<launch>\n  <node pkg="camera_driver" exec="camera_node" name="{FAST[1:]}">\n'
+        f'    <param from="{params}"/>\n    <param name="camera.width" value="800"/>\n'
+        "  </node>\n</launch>\n",
+        encoding="utf-8",
+    )
+    done = run_audit("--launch", str(launch), "--write", FAST)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert params.read_text(encoding="utf-8") == (
+        "/**:\n  ros__parameters:\n    camera:\n      fps: 30.0  # bench\n"
+    )
+    assert f"kept: {params}:4:12: {FAST}: camera.fps: 20.0 -> 30.0" in done.stderr
+    assert (
+        f"kept: not written, a launch file's own value: {launch}:4:5: {FAST}: camera.width: "
+        "800 -> 640" in done.stderr
+    )

@@ -31,6 +31,7 @@ API_GETS = (
     "/api/nodes",
     f"/api/node?name={SERVED}",
     f"/api/params-file?node={SERVED}",
+    f"/api/keep?node={SERVED}",
 )
 
 
@@ -70,7 +71,8 @@ def post(server: TuneServer, body: bytes, path: str = "/api/set", **headers: str
     return http_call(server.port, "POST", path, body=body, headers=headers, token=TOKEN)
 
 
-POSTS = ("/api/set", "/api/check")  # /api/check takes a set's body and changes nothing
+# /api/check takes a set's body and changes nothing; /api/keep reads its node from it
+POSTS = ("/api/set", "/api/check", "/api/keep")
 
 
 def test_every_route_but_the_assets_needs_the_token(server: TuneServer) -> None:

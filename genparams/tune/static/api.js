@@ -36,6 +36,8 @@ export const api = {
       headers: { "content-type": "application/json" },
       body: stringifyJson({ node, params }),
     }),
+  keepPreview: (node) => call(`/api/keep?node=${encodeURIComponent(node)}`),
+  keep: (node) => call("/api/keep", { method: "POST", headers: { "content-type": "application/json" }, body: stringifyJson({ node }) }),
   paramsFileUrl: (name) => `/api/params-file?node=${encodeURIComponent(name)}`,
   events: () => new EventSource("/api/events"),
 };

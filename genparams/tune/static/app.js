@@ -1,6 +1,7 @@
 // The tuning page: node list, a node's form, edits applied through its parameter services.
 import { api } from "./api.js";
 import { InputError, diffTable, el, mapGroup, row, section } from "./form.js";
+import { keepControls } from "./keep.js";
 import { parseJson, shownJson, stringifyJson } from "./json.js";
 
 // pending: edits not applied yet; drafts: values being typed (checked, not applied);
@@ -255,7 +256,7 @@ function renderNode(data) {
     : null;
   const form = el("form", { "data-node": data.node, class: data.schema ? "genparams" : "plain" },
     el("h2", { text: data.node }), el("p", { class: "hint", text: kind }), refused,
-    el("div", { class: "toolbar" }, apply, download), body,
+    el("div", { class: "toolbar" }, apply, download, keepControls(data.node, page.readOnly)), body,
     el("h3", { text: "Differences from the defaults" }), diff);
   form.addEventListener("submit", (event) => event.preventDefault());
   page.view = { form, known, apply, diff, shape: shapeOf(data) };
