@@ -55,6 +55,7 @@ class Declared:
     found: Found | None  # None: a parameter of the params file the node declares as given
     fate: Fate
     key: str | None = None
+    given_name: str = ""  # a parameter of the params file left out: its name there
 
 
 @dataclass(frozen=True)
@@ -95,6 +96,7 @@ class _Converter:
         self.overrides = overrides
         self.given_by = given_by
         self.from_file: list[str] = []  # parameters only the params file names
+        self.file_left_out: list[str] = []  # names of the params file no schema can hold
         self.schema = SchemaTree()
         self.fates: list[tuple[Found, Fate]] = []
         self.keys: dict[Found, str] = {}
@@ -141,6 +143,7 @@ class _Converter:
         data["parameters"] = self.schema.tree
         declared = [Declared(f, o, self.keys.get(f)) for f, o in self.fates]
         declared += [Declared(None, EXACT, n) for n in self.from_file]
+        declared += [Declared(None, LEFT_OUT, None, n) for n in self.file_left_out]
         return RclpyImported(
             name=self.name,
             data=data,
@@ -160,6 +163,7 @@ class _Converter:
             problem = reason if leaf is None else self.schema.name_problem(name)
             if leaf is None or problem is not None:
                 self.warn(where, name, f"given by the params file: {problem}: left out")
+                self.file_left_out.append(name)
                 continue
             self.schema.place(name, leaf)
             self.from_file.append(name)
@@ -437,6 +441,6 @@ def _outcome(declared: Declared) -> Outcome:
     """A declaration's fate, as the importers report it: by the name the node gives it."""
     found, key = declared.found, declared.key or ""
     if found is None:
-        return Outcome(key, declared.fate, key)
+        return Outcome(key or declared.given_name, declared.fate, key)
     name = found.name.value if isinstance(found.name.value, str) else written_name(found)
     return Outcome(name or key or unparsed(found.at), declared.fate, key)

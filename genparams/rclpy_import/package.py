@@ -3,7 +3,8 @@
 The package's root is the nearest folder above the node file holding ``package.xml``,
 ``setup.py`` or ``pyproject.toml``. Relative imports (``from .driver import Driver``)
 and the package's own absolute ones (``from my_pkg.config import RATE``) are followed
-to files under that root; anything else (rclpy, numpy, other packages) is not. Files are
+to files under that root, and so are imports of a package beside it (another package of
+the same workspace or repository); anything else (rclpy, numpy) is not. Files are
 parsed, never run, and at most ``MAX_FILES`` of them are read.
 """
 
@@ -19,6 +20,7 @@ MAX_FILES = 32  # files of the package read besides the node file
 MAX_BYTES = 1_000_000  # a larger file is not read
 _MARKERS = ("package.xml", "setup.py", "pyproject.toml")
 _MAX_UP = 6  # folders above the node file searched for the root
+_MAX_SIBLINGS = 64  # folders beside the root looked at for other packages
 
 
 @dataclass(frozen=True)
@@ -52,7 +54,7 @@ class Package:
         if path in self._modules:
             return self._modules[path]
         self._modules[path] = None
-        if path == self.node_file or not self._inside(path):
+        if path == self.node_file or not self._reachable(path):
             return None
         if len(self.read) >= MAX_FILES:
             self.skipped.append(f"{path}: more than {MAX_FILES} files")
@@ -84,7 +86,7 @@ class Package:
             return _file(base, parts)
         if not parts:
             return None
-        bases = [self.root, self.root / "src", *self._ancestors(importer)]
+        bases = [self.root, self.root / "src", *self._ancestors(importer), *self._siblings()]
         for base in bases:
             found = _file(base, parts)
             if found is not None:
@@ -103,6 +105,21 @@ class Package:
             return str(path.relative_to(self.root))
         return str(path)
 
+    def _siblings(self) -> list[Path]:
+        """The other packages beside the root (a workspace or repository of packages),
+        for an absolute import of one of them (``from diagnostic_updater import Updater``)."""
+        if self.root is None:
+            return []
+        out: list[Path] = []
+        try:
+            folders = sorted(self.root.parent.iterdir())[:_MAX_SIBLINGS]
+        except OSError:
+            return []
+        for folder in folders:
+            if folder != self.root and any((folder / m).is_file() for m in _MARKERS):
+                out += [folder, folder / "src"]
+        return out
+
     def _ancestors(self, importer: Path) -> list[Path]:
         out = []
         for folder in importer.resolve().parents:
@@ -110,6 +127,14 @@ class Package:
                 break
             out.append(folder)
         return out
+
+    def _reachable(self, path: Path) -> bool:
+        """In the package, or in a package beside it."""
+        if self.root is None:
+            return False
+        return path.resolve().is_relative_to(self.root.parent) and any(
+            path.resolve().is_relative_to(base) for base in [self.root, *self._siblings()]
+        )
 
     def _inside(self, path: Path) -> bool:
         return self.root is not None and path.resolve().is_relative_to(self.root)

@@ -63,14 +63,16 @@ def opens(node: ast.AST) -> bool:
 
 
 def is_helper(function: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
-    """A function that declares a parameter named by one of its arguments
+    """A function that declares (or reads) a parameter named by one of its arguments
     (``def get_param(self, name, default)``): it is read where it is called."""
-    names = {a.arg for a in [*function.args.args, *function.args.kwonlyargs]}
+    names = {a.arg for a in [*function.args.args, *function.args.kwonlyargs]} - {"self"}
+    if function.name == "__init__":
+        return False  # a constructor is read where its object is built
     for node in ast.walk(function):
         if (
             isinstance(node, ast.Call)
             and isinstance(node.func, ast.Attribute)
-            and node.func.attr == DECLARE_ONE
+            and node.func.attr in (DECLARE_ONE, "get_parameter")
         ):
             first = node.args[0] if node.args else None
             first = next((k.value for k in node.keywords if k.arg == "name"), first)
@@ -239,7 +241,9 @@ class _Scanner:
             self.walk(statement.body, main_scope, context)
             self.walk(statement.orelse, scope, context)
         elif isinstance(statement, ast.If) and _guards_redeclaring(statement):
+            self.expressions(statement.test, statement, scope, context)
             self.walk(statement.body, scope, context)  # declares once, whatever the test
+            self.walk(statement.orelse, scope, context)
         elif isinstance(statement, ast.If):
             inner = context.changed(
                 condition=context.condition or f"if {unparsed(statement.test)}",
@@ -372,7 +376,9 @@ class _Scanner:
         site = context.call_site or context.source.location(call)
         helper = scope.functions.get(name)
         module_function = self.view.functions.get(name)
-        if helper is not None and (helper in self.stack or not declares(helper)):
+        if helper is not None and (
+            helper in self.stack or not (declares(helper) or is_helper(helper))
+        ):
             return
         if helper is not None and (is_helper(helper) or (module_function and self.in_class)):
             source = module_function.module.source if module_function else context.source
@@ -384,14 +390,16 @@ class _Scanner:
                 self.followed.add(name)
             return
         cls = lookup_class(self.view, call.func)
-        if cls is None or cls.definition in self.stack or not _hands_self(call):
+        if cls is None or cls.definition in self.stack or not declares(cls.definition):
             return
-        if _is_node_class(cls.definition) or not declares(cls.definition):
-            return
+        if self.in_class and (not _hands_node(call, True) or _is_node_class(cls.definition)):
+            return  # a node class builds an object, and hands it itself
+        if not self.in_class and not (_hands_node(call, False) or _is_node_class(cls.definition)):
+            return  # the module's functions build a node, or hand one to an object
         self.followed.add(cls.definition.name)
         self.stack.append(cls.definition)
         try:
-            via = context.via or f"the object {cls.definition.name}(self)"
+            via = context.via or f"the object {unparsed(call, 40)}"
             self.object_methods(cls, via, site, call, scope)
         finally:
             self.stack.pop()
@@ -478,10 +486,11 @@ def _called(call: ast.Call) -> str | None:
     return None
 
 
-def _hands_self(call: ast.Call) -> bool:
-    """The node is given to the call: ``Driver(self)``, ``Driver(node=self)``."""
+def _hands_node(call: ast.Call, in_class: bool) -> bool:
+    """The node is given to the call: ``Driver(self)``, ``Driver(node=self)`` in a node
+    class; a variable (``Updater(node)``) in the module's functions."""
     values = [*call.args, *(k.value for k in call.keywords)]
-    return any(isinstance(v, ast.Name) and v.id == "self" for v in values)
+    return any(isinstance(v, ast.Name) and (v.id == "self" or not in_class) for v in values)
 
 
 def _is_node_class(cls: ast.ClassDef) -> bool:
@@ -513,13 +522,17 @@ def _super_called(classes: list[ClassFound], name: str) -> bool:
 
 
 def _guards_redeclaring(statement: ast.If) -> bool:
-    """``if not self.has_parameter(name):`` with no else: it declares once, as a schema does."""
+    """``if not self.has_parameter(name): <declare>``, or ``if self.has_parameter(name):
+    <read> else: <declare>``: it declares once, whatever the test, as a schema does."""
     test = statement.test
+    if isinstance(test, ast.UnaryOp) and isinstance(test.op, ast.Not):
+        if statement.orelse:
+            return False
+        test = test.operand
+    elif not statement.orelse or declares(ast.Module(statement.body, [])):
+        return False
     return (
-        not statement.orelse
-        and isinstance(test, ast.UnaryOp)
-        and isinstance(test.op, ast.Not)
-        and isinstance(test.operand, ast.Call)
-        and isinstance(test.operand.func, ast.Attribute)
-        and test.operand.func.attr == "has_parameter"
+        isinstance(test, ast.Call)
+        and isinstance(test.func, ast.Attribute)
+        and test.func.attr == "has_parameter"
     )
