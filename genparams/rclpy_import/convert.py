@@ -41,8 +41,6 @@ from genparams.rclpy_import.placing import (
 from genparams.rclpy_import.scope import SharePath, unparsed
 from genparams.schema.errors import Location, SchemaProblem
 
-_CONDITION_TYPES = ("bool", "int", "double", "string")
-
 
 @dataclass(frozen=True)
 class Declared:

@@ -78,6 +78,8 @@ def unchanged_reason(node: ImportedNode) -> str:
     declared = [o.found for o in node.imported.declared if o.found and o.found.read is None]
     if declared and not any(f.receiver_is_self for f in declared):
         return "only declarations on self in a class are rewritten"
+    if not declared:
+        return "no statement of the node declares a parameter the schema holds"
     return (
         "every declaring statement also declares a parameter left out (see warnings), so "
         "it stays as written"
