@@ -43,13 +43,29 @@ def finish(
 ) -> int:
     """Write ``text``, the schema of ``imported`` from ``source``, to ``target`` (stdout
     when None) and the files ``beside`` it, reporting ``also_report`` after the findings;
-    returns the exit code."""
+    returns the exit code. The steps one by one, for a command that writes more (a patch):
+    ``refuse_unwritable``, ``report_import``, ``write_schema``, ``exit_code``."""
     refuse_unwritable(command, source, imported, text)
+    report_import(imported, also_report)
+    write_schema(text, target, beside)
+    return exit_code(imported)
+
+
+def report_import(imported: Imported, also_report: Sequence[str] = ()) -> None:
+    """Notes and warnings at their places, then ``also_report``, then the summary."""
     report(*imported.findings(), *also_report, imported.summary())
+
+
+def write_schema(text: str, target: Path | None, beside: Mapping[Path, str] | None = None) -> None:
+    """The schema to ``target`` with the files ``beside`` it, all or none; or to stdout."""
     if target is None:
         sys.stdout.write(text)
     else:
         write_outputs({target: text, **(beside or {})})
+
+
+def exit_code(imported: Imported) -> int:
+    """1 when a warning says something was lost, else 0."""
     return WRITTEN_WITH_WARNINGS if imported.warnings else WRITTEN
 
 

@@ -10,11 +10,18 @@ from __future__ import annotations
 
 import re
 from collections.abc import Collection, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from genparams.errors import GenparamsError
-from genparams.gpl.validation import Translated, descriptor_range, element_bounds, translate
+from genparams.gpl.validation import (
+    Translated,
+    arguments,
+    combination_refused,
+    descriptor_range,
+    element_bounds,
+    translate,
+)
 from genparams.importing import EXACT, LEFT_OUT, Imported, Outcome, schema_name
 from genparams.runtime.core.types import TYPES, ValueTypeError
 from genparams.runtime.core.validator_kinds import KINDS, ValidatorArgumentError, build_validator
@@ -32,13 +39,16 @@ class GplError(GenparamsError):
     """The file is not a GPL parameter file at all."""
 
 
-@dataclass
+@dataclass(frozen=True)
 class CustomUse:
     """A custom validator the user writes in Python, and where the schema uses it."""
 
     function: str
     gpl_name: str
-    used_by: list[tuple[str, list[Any]]] = field(default_factory=list)  # (parameter, args)
+    used_by: tuple[tuple[str, tuple[Any, ...]], ...] = ()  # (parameter, args)
+
+    def also_by(self, parameter: str, args: tuple[Any, ...]) -> CustomUse:
+        return replace(self, used_by=(*self.used_by, (parameter, args)))
 
 
 @dataclass(frozen=True)
@@ -90,7 +100,9 @@ class _Importer:
         self.customs: dict[str, CustomUse] = {}
         self.outcomes: list[Outcome] = []  # each GPL parameter's, open namespaces aside
         self.added: dict[str, dict[str, Any]] = {}  # key lists the GPL file lacks
-        self.key_lists: set[str] = set()  # dotted names of the parameters keying maps
+        # the dotted name of each parameter keying maps: whether one of its maps holds a
+        # parameter without a default
+        self.key_lists: dict[str, bool] = {}
 
     def warn(self, doc_path: Path, message: str) -> None:
         where = self.document.key_location(doc_path)
@@ -179,18 +191,32 @@ class _Importer:
             )
             return None
         inner = self.namespace(tree, doc_path, (*ros_path, "*"), [*scopes, tree])
-        self.key_lists.add(key_name)
+        self.key_lists[key_name] = self.key_lists.get(key_name, False) or _unset_inside(inner)
         return {"for_each": key_name, **inner}
 
     def empty_key_lists(self, parameters: dict[str, Any], top: str) -> None:
-        """GPL users write a key list's "no keys" as ``[""]``: genparams writes ``[]``."""
-        for name in sorted(self.key_lists):
+        """GPL users write a key list's "no keys" as ``[""]``: genparams writes ``[]``.
+
+        GPL itself declares the map's parameters for the key ``""`` (``.first``); when one
+        has no default, its listener refuses every section that leaves the list unset. The
+        list is then required, so genparams refuses the same sections."""
+        for name, unset_inside in sorted(self.key_lists.items()):
             leaf: Any = parameters
             for part in name.split("."):
                 leaf = leaf.get(part) if isinstance(leaf, dict) else None
-            if isinstance(leaf, dict) and leaf.get("default") == [""]:
+            if not isinstance(leaf, dict) or leaf.get("default") != [""]:
+                continue
+            where = (top, *name.split("."), "default_value")
+            if unset_inside:
+                del leaf["default"]
+                self.note(
+                    where,
+                    'a key list of [""] over a map whose parameters are not all set by '
+                    'default: GPL declares them for the key "" and refuses to start with '
+                    "them unset; imported as a required parameter",
+                )
+            else:
                 leaf["default"] = []
-                where = (top, *name.split("."), "default_value")
                 self.note(where, 'a key list of [""] means no keys: imported as []')
 
     def key_parameter(
@@ -271,6 +297,13 @@ class _Importer:
         if not isinstance(validation, dict):
             self.warn((*doc_path, "validation"), "validation must be a mapping: left out")
             return []
+        refused = combination_refused(validation)
+        if refused:
+            self.note(
+                (*doc_path, "validation"),
+                f"GPL 1.0 and later refuse {refused} (earlier ones warn): imported with each "
+                "validation setting its side of the range in file order, as they did",
+            )
         out: list[Any] = []
         low: float | None = None
         high: float | None = None
@@ -286,10 +319,9 @@ class _Importer:
             if translated.element_high is not None:
                 high = translated.element_high
             if translated.custom:
-                use = self.customs.setdefault(
-                    translated.custom, CustomUse(translated.custom, str(key))
-                )
-                use.used_by.append((".".join(ros_path), list(raw or []) if raw != [] else []))
+                use = self.customs.get(translated.custom, CustomUse(translated.custom, str(key)))
+                use = use.also_by(".".join(ros_path), tuple(arguments(raw)))
+                self.customs[translated.custom] = use
                 self.note(where, f"custom validator: write {self.checks_module}.{use.function}")
         limits = descriptor_range(validation, base)
         if limits is not None and not base.endswith("_array"):
@@ -335,14 +367,22 @@ class _Importer:
                 return
 
 
+def _unset_inside(namespace: dict[str, Any]) -> bool:
+    """Whether a converted namespace holds a parameter without a default."""
+    for key, value in namespace.items():
+        if not isinstance(value, dict) or key == "for_each" or value.get("open"):
+            continue
+        if "type" not in value and _unset_inside(value):
+            return True
+        if "type" in value and "default" not in value and not value.get("optional"):
+            return True
+    return False
+
+
 def _frozen(value: Any) -> Any:
     if isinstance(value, list):
         return tuple(_frozen(v) for v in value)
     return value
-
-
-def _members(entry: dict[str, Any]) -> dict[str, Any]:
-    return {k: v for k, v in entry.items() if k != "for_each"}
 
 
 def _base_type(gpl_type: str) -> tuple[str, int | None]:

@@ -202,6 +202,21 @@ def descriptor_range(validation: dict[Any, Any], param_type: str) -> tuple[float
     return (-math.inf if low is None else low, math.inf if high is None else high)
 
 
+_SCALAR_BOUNDS = frozenset({"gt", "gt_eq", "lt", "lt_eq"})
+_ELEMENT_SIDES = frozenset({"lower_element_bounds", "upper_element_bounds"})
+
+
+def combination_refused(validation: dict[Any, Any]) -> str:
+    """The combination of range validations GPL's generator refuses in one parameter
+    (since GPL 1.0; it warned before), in words, or ""."""
+    names = {gpl_name(str(key)) for key in validation}
+    if "bounds" in names and names & _SCALAR_BOUNDS:
+        return "'bounds' beside gt/gt_eq/lt/lt_eq"
+    if "element_bounds" in names and names & _ELEMENT_SIDES:
+        return "'element_bounds' beside lower_element_bounds/upper_element_bounds"
+    return ""
+
+
 def element_bounds(low: float, high: float, param_type: str) -> dict[str, Any]:
     """One ``element_bounds`` from GPL's element bounds: NaN items pass, as in GPL."""
     if param_type == "double_array":

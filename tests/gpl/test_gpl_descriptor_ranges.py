@@ -1,11 +1,10 @@
 """What GPL's Python module gives a node, for shapes its users write: the descriptor range
-of `gt<>`, `gt_eq<>`, `lt<>`, `lt_eq<>`, `bounds<>` and the element bounds, a key list of
-`[""]`, NaN items against element bounds, and custom validators in GPL's Python convention.
+of `gt<>`, `gt_eq<>`, `lt<>`, `lt_eq<>`, `bounds<>` and the element bounds on int and double
+parameters and arrays, a key list of `[""]`, NaN items against element bounds, and custom
+validators in GPL's Python convention.
 
-The expected descriptors restate GPL's rule (its declare_parameter template): each
-validation whose name holds `bounds`, `lt` or `gt` sets a side of the range, in file order;
-`gt` is one step above its limit (1, or the double epsilon), `lt` one step below; an open
-side is +-inf for doubles and +-(2**31 - 1) for integers, arrays included.
+The expected ranges are not computed here: they are what GPL's own generated Python module
+declared on a real rclpy node, recorded once as literal data (see GPL_DECLARED).
 """
 
 from __future__ import annotations
@@ -27,37 +26,83 @@ from genparams.schema.errors import SchemaError
 from genparams.schema.loader import load_yaml
 from tests.support import RosHarness, import_file, unique_name
 
-EPS = sys.float_info.epsilon
-INT_LOW, INT_HIGH = -(2**31) - 1, 2**31 - 1
-
-# (GPL type, default, validation as written in a GPL file, the range GPL's descriptor holds)
-SHAPES: dict[str, tuple[str, str, str, tuple[float, float] | None]] = {
-    "d_gt": ("double", "1.0", "gt<>: [0.5]", (0.5 + EPS, math.inf)),
-    "d_gt_eq": ("double", "1.0", "gt_eq<>: [0.0]", (0.0, math.inf)),
-    "d_lt": ("double", "1.0", "lt<>: [2.0]", (-math.inf, 2.0 - EPS)),
-    "d_lt_eq": ("double", "1.0", "lt_eq<>: [15.0]", (-math.inf, 15.0)),
-    "d_gt_lt_eq": ("double", "16.0", "{gt<>: [15.0], lt_eq<>: [20.0]}", (15.0 + EPS, 20.0)),
-    "d_bounds": ("double", "1.0", "bounds<>: [0.0, 5.0]", (0.0, 5.0)),
-    "d_gt_int_limit": ("double", "1.0", "gt<>: [0]", (EPS, math.inf)),
-    "i_gt": ("int", "5", "gt<>: [0]", (1, INT_HIGH)),
-    "i_gt_eq": ("int", "5", "gt_eq<>: [2]", (2, INT_HIGH)),
-    "i_lt": ("int", "5", "lt<>: [20]", (INT_LOW, 19)),
-    "i_lt_eq": ("int", "5", "lt_eq<>: [15]", (INT_LOW, 15)),
-    "i_gt_lt": ("int", "16", "{gt<>: [15], lt<>: [20]}", (16, 19)),
-    "i_bounds_then_lt_eq": ("int", "5", "{bounds<>: [0, 100], lt_eq<>: [10]}", (0, 10)),
-    "i_size_gt_only": ("int_array", "[1]", "size_gt<>: [0]", None),
-    "da_lower": ("double_array", "[1.0]", "lower_element_bounds<>: [0.0]", (0.0, math.inf)),
-    "da_upper": ("double_array", "[1.0]", "upper_element_bounds<>: [3.0]", (-math.inf, 3.0)),
+# (GPL type, default, validation as written in a GPL file)
+SHAPES: dict[str, tuple[str, str, str]] = {
+    "d_gt": ("double", "1.0", "gt<>: [0.5]"),
+    "d_gt_zero": ("double", "1.0", "gt<>: [0.0]"),
+    "d_gt_int_limit": ("double", "1.0", "gt<>: [0]"),
+    "d_gt_negative": ("double", "1.0", "gt<>: [-2.5]"),
+    "d_gt_large": ("double", "2000000000.0", "gt<>: [1000000000.0]"),
+    "d_gt_eq": ("double", "1.0", "gt_eq<>: [0.0]"),
+    "d_gt_eq_two": ("double", "3.0", "gt_eq<>: [2.0]"),
+    "d_lt": ("double", "1.0", "lt<>: [2.0]"),
+    "d_lt_zero": ("double", "-1.0", "lt<>: [0.0]"),
+    "d_lt_eq": ("double", "1.0", "lt_eq<>: [15.0]"),
+    "d_bounds": ("double", "1.0", "bounds<>: [0.0, 5.0]"),
+    "d_gt_lt_eq": ("double", "16.0", "{gt<>: [15.0], lt_eq<>: [20.0]}"),
+    "d_gt_lt": ("double", "0.5", "{gt<>: [0.0], lt<>: [1.0]}"),
+    "i_gt": ("int", "5", "gt<>: [0]"),
+    "i_gt_eq": ("int", "5", "gt_eq<>: [2]"),
+    "i_lt": ("int", "5", "lt<>: [20]"),
+    "i_lt_eq": ("int", "5", "lt_eq<>: [15]"),
+    "i_bounds": ("int", "5", "bounds<>: [0, 100]"),
+    "i_gt_lt": ("int", "16", "{gt<>: [15], lt<>: [20]}"),
+    "i_gt_eq_lt_eq": ("int", "3", "{gt_eq<>: [-4], lt_eq<>: [4]}"),
+    "i_size_gt_only": ("int_array", "[1]", "size_gt<>: [0]"),
+    "da_lower": ("double_array", "[1.0]", "lower_element_bounds<>: [0.0]"),
+    "da_upper": ("double_array", "[1.0]", "upper_element_bounds<>: [3.0]"),
     "da_both": (
         "double_array",
         "[1.0]",
         "{lower_element_bounds<>: [-1.0], upper_element_bounds<>: [1.0]}",
-        (-1.0, 1.0),
     ),
-    "da_element_bounds": ("double_array", "[0.5]", "element_bounds<>: [0.1, 10.0]", (0.1, 10.0)),
-    "ia_lower": ("int_array", "[1]", "lower_element_bounds<>: [0]", (0, INT_HIGH)),
-    "ia_element_bounds": ("int_array", "[1]", "element_bounds<>: [0, 9]", (0, 9)),
-    "s_not_numeric": ("string", "a", "not_empty<>: []", None),
+    "da_element_bounds": ("double_array", "[0.5]", "element_bounds<>: [0.1, 10.0]"),
+    "ia_lower": ("int_array", "[1]", "lower_element_bounds<>: [0]"),
+    "ia_upper": ("int_array", "[1]", "upper_element_bounds<>: [7]"),
+    "ia_element_bounds": ("int_array", "[1]", "element_bounds<>: [0, 9]"),
+    "s_not_numeric": ("string", "a", "not_empty<>: []"),
+}
+
+# The range (from_value, to_value; step 0) of each shape's descriptor as GPL's generated
+# Python module declares it, or None for no range. Recorded, not derived: the SHAPES
+# alone were written as a GPL file (each parameter as _gpl_file writes it), GPL's Python
+# generator (generate_parameter_library_py 1.2.0, commit 1f74d68, the commit the corpus
+# was copied from) made its module with `python -m
+# generate_parameter_library_py.generate_python_module OUT.py shapes.yaml`, its
+# ParamListener was declared on a real rclpy (Jazzy) node, and node.describe_parameter
+# gave these; the parameter services report the same. Integers are integer_range, the
+# rest floating_point_range. GPL's C++ header declares other values (see
+# docs/migrating-from-gpl.md, "Descriptor ranges"); genparams generates Python.
+GPL_DECLARED: dict[str, tuple[float, float] | None] = {
+    "d_gt": (0.5000000000000002, math.inf),
+    "d_gt_zero": (2.220446049250313e-16, math.inf),
+    "d_gt_int_limit": (2.220446049250313e-16, math.inf),
+    "d_gt_negative": (-2.5, math.inf),
+    "d_gt_large": (1000000000.0, math.inf),
+    "d_gt_eq": (0.0, math.inf),
+    "d_gt_eq_two": (2.0, math.inf),
+    "d_lt": (-math.inf, 1.9999999999999998),
+    "d_lt_zero": (-math.inf, -2.220446049250313e-16),
+    "d_lt_eq": (-math.inf, 15.0),
+    "d_bounds": (0.0, 5.0),
+    "d_gt_lt_eq": (15.0, 20.0),
+    "d_gt_lt": (2.220446049250313e-16, 0.9999999999999998),
+    "i_gt": (1, 2147483647),
+    "i_gt_eq": (2, 2147483647),
+    "i_lt": (-2147483649, 19),
+    "i_lt_eq": (-2147483649, 15),
+    "i_bounds": (0, 100),
+    "i_gt_lt": (16, 19),
+    "i_gt_eq_lt_eq": (-4, 4),
+    "i_size_gt_only": None,
+    "da_lower": (0.0, math.inf),
+    "da_upper": (-math.inf, 3.0),
+    "da_both": (-1.0, 1.0),
+    "da_element_bounds": (0.1, 10.0),
+    "ia_lower": (0, 2147483647),
+    "ia_upper": (-2147483649, 7),
+    "ia_element_bounds": (0, 9),
+    "s_not_numeric": None,
 }
 
 
@@ -68,7 +113,7 @@ def _gpl_file(tmp_path: Path) -> Path:
     lines += ["        default_value: 1.0", "        validation:", "          gt_eq<>: [0.0]"]
     lines += ["  check:", "    type: double", "    default_value: 1.0", "    validation:"]
     lines += ['      "shapes_checks::positive_or_empty": null']
-    for name, (gpl_type, default, validation, _) in SHAPES.items():
+    for name, (gpl_type, default, validation) in SHAPES.items():
         lines += [f"  {name}:", f"    type: {gpl_type}", f"    default_value: {default}"]
         lines += [f"    validation: {validation if validation.startswith('{') else ''}"]
         if not validation.startswith("{"):
@@ -104,6 +149,27 @@ def _declared(ros: RosHarness, module: types.ModuleType) -> Any:
     return node
 
 
+def test_every_shape_has_a_recorded_range() -> None:
+    assert set(GPL_DECLARED) == set(SHAPES)
+
+
+@pytest.mark.parametrize("name", sorted(SHAPES))
+def test_converted_range_is_gpls(imported: tuple[GplImported, types.ModuleType], name: str) -> None:
+    """The schema's range (a number) or element bounds (an array) hold GPL's numbers."""
+    leaf = imported[0].data["parameters"][name]
+    expected = GPL_DECLARED[name]
+    if leaf["type"].endswith("_array"):
+        bounds = [v for v in leaf.get("validators", []) if "element_bounds" in v]
+        found: Any = [_element_limits(b["element_bounds"]) for b in bounds]
+    else:
+        found = [(leaf["range"]["min"], leaf["range"]["max"])] if "range" in leaf else []
+    assert found == ([] if expected is None else [expected])
+
+
+def _element_limits(bounds: Any) -> tuple[float, float]:
+    return (bounds["min"], bounds["max"]) if isinstance(bounds, dict) else tuple(bounds)
+
+
 @pytest.mark.parametrize("name", sorted(SHAPES))
 def test_descriptor_range_is_gpls(
     ros: RosHarness, imported: tuple[GplImported, types.ModuleType], name: str
@@ -111,7 +177,7 @@ def test_descriptor_range_is_gpls(
     node = _declared(ros, imported[1])
     descriptor = node.describe_parameter(name)
     ranges = [*descriptor.integer_range, *descriptor.floating_point_range]
-    expected = SHAPES[name][3]
+    expected = GPL_DECLARED[name]
     if expected is None:
         assert ranges == []
         return

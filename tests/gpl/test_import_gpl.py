@@ -171,3 +171,22 @@ def test_files_gpl_refuses_are_refused_at_their_place(
     code, out, err = run(capsys, str(source), "--out-dir", str(tmp_path))
     assert (code, out, list(tmp_path.iterdir())) == (2, "", [])
     assert err.splitlines()[0] == f"{source}:{first_line}"
+
+
+def test_a_custom_validator_with_one_argument_not_in_a_list(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """GPL takes `"ns::above<>": 0.5` as the argument list [0.5], as it does for built-ins."""
+    source = tmp_path / "scalar.yaml"
+    source.write_text(
+        "c:\n  n:\n    type: double\n    default_value: 1.0\n"
+        '    validation:\n      "ns::above<>": 0.5\n',
+        encoding="utf-8",
+    )
+    code, _, err = run(capsys, str(source), "--out-dir", str(tmp_path))
+    assert code == 0, err
+    schema = (tmp_path / "c.yaml").read_text("utf-8")
+    assert "{custom: {function: 'c_checks:above', args: [0.5]}}" in schema
+    assert "def above(value: Any, arg0: Any) -> str | None:" in (
+        tmp_path / "c_checks.py"
+    ).read_text("utf-8")
