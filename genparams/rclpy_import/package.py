@@ -3,9 +3,9 @@
 The package's root is the nearest folder above the node file holding ``package.xml``,
 ``setup.py`` or ``pyproject.toml``. Relative imports (``from .driver import Driver``)
 and the package's own absolute ones (``from my_pkg.config import RATE``) are followed
-to files under that root, and so are imports of a package beside it (another package of
-the same workspace or repository); anything else (rclpy, numpy) is not. Files are
-parsed, never run, and at most ``MAX_FILES`` of them are read.
+to files under that root, and so are imports of a ROS package beside it (``package.xml``
+in both: another package of the same workspace or repository); anything else (rclpy,
+numpy) is not. Files are parsed, never run, and at most ``MAX_FILES`` of them are read.
 """
 
 from __future__ import annotations
@@ -18,7 +18,8 @@ from genparams.rclpy_import.found import SourceFile
 
 MAX_FILES = 32  # files of the package read besides the node file
 MAX_BYTES = 1_000_000  # a larger file is not read
-_MARKERS = ("package.xml", "setup.py", "pyproject.toml")
+_ROS_MARKER = "package.xml"
+_MARKERS = (_ROS_MARKER, "setup.py", "pyproject.toml")
 _MAX_UP = 6  # folders above the node file searched for the root
 _MAX_SIBLINGS = 64  # folders beside the root looked at for other packages
 
@@ -39,6 +40,7 @@ class Package:
     read: list[Path] = field(default_factory=list)
     skipped: list[str] = field(default_factory=list)  # files not read, with the reason
     _modules: dict[Path, ModuleFile | None] = field(default_factory=dict)
+    _beside: list[Path] | None = None  # the packages beside the root, once looked up
 
     @classmethod
     def of(cls, node_file: Path) -> Package:
@@ -106,19 +108,22 @@ class Package:
         return str(path)
 
     def _siblings(self) -> list[Path]:
-        """The other packages beside the root (a workspace or repository of packages),
-        for an absolute import of one of them (``from diagnostic_updater import Updater``)."""
-        if self.root is None:
-            return []
-        out: list[Path] = []
+        """The other ROS packages beside the root's (``package.xml`` in each: a workspace
+        or repository of packages), for an absolute import of one of them
+        (``from diagnostic_updater import Updater``)."""
+        if self._beside is not None:
+            return self._beside
+        self._beside = []
+        if self.root is None or not (self.root / _ROS_MARKER).is_file():
+            return self._beside
         try:
             folders = sorted(self.root.parent.iterdir())[:_MAX_SIBLINGS]
         except OSError:
-            return []
+            return self._beside
         for folder in folders:
-            if folder != self.root and any((folder / m).is_file() for m in _MARKERS):
-                out += [folder, folder / "src"]
-        return out
+            if folder != self.root and (folder / _ROS_MARKER).is_file():
+                self._beside += [folder, folder / "src"]
+        return self._beside
 
     def _ancestors(self, importer: Path) -> list[Path]:
         out = []
