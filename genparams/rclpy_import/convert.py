@@ -155,6 +155,7 @@ class _Converter:
         them as the file gives them (automatically_declare_parameters_from_overrides)."""
         where = next(o.where for o in self.unit.options if o.option == AUTOMATIC)
         placed = set(self.schema.first) | set(self.from_file)
+        placed |= {n for n in self.overrides if self.schema.per_entry(n)}
         for name, leaf, reason in undeclared(self.overrides, placed, open_prefixes):
             problem = reason if leaf is None else self.schema.name_problem(name)
             if leaf is None or problem is not None:
@@ -171,7 +172,7 @@ class _Converter:
     def from_params_file(self, found: Found, name: str, place: ItemPlace | None) -> list[Any]:
         """The values the params file gives what ``found`` reads."""
         if place is not None:
-            return entry_values(self.overrides, place) if place.tail else []
+            return entry_values(self.overrides, place)
         return [self.overrides[name]] if name in self.overrides else []
 
     def declared(self, read: Found) -> bool:

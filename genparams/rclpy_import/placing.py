@@ -149,6 +149,18 @@ class SchemaTree:
             return None, f"a value compared with {name!r} is not a {kind}"
         return {name: kept[0] if len(kept) == 1 else kept}, ""
 
+    def per_entry(self, name: str) -> bool:
+        """Whether ``name`` is an entry of a per-item parameter or of a group
+        (``offsets.a`` under ``offsets: {for_each: joints}``): the schema states it."""
+        node: Any = self.tree
+        for part in name.split(".")[:-1]:
+            if not isinstance(node, dict) or part not in node:
+                return False
+            node = node[part]
+            if isinstance(node, dict) and FOR_EACH in node:
+                return True
+        return False
+
     def leaf(self, name: str) -> dict[str, Any] | None:
         node: Any = self.tree
         for part in name.split("."):

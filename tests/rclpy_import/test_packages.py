@@ -218,3 +218,35 @@ def test_the_static_evaluator_reads_a_module_s_constants() -> None:
     assert isinstance(path, SharePath) and path == "$(find-pkg-share cam)/config/a.yaml"
     with pytest.raises(UntranslatableError, match="the variable 'missing'"):
         value("missing + 1")
+
+
+def test_reads_of_a_node_declaring_from_its_overrides_take_the_file_s_types(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    node = tmp_path / "trim.py"
+    node.write_text(
+        "from rclpy.node import Node\n\n\nclass Trim(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('trim', automatically_declare_parameters_from_overrides=True)\n"
+        "        self.declare_parameter('joints', ['a', 'b'])\n"
+        "        for joint in self.get_parameter('joints').value:\n"
+        "            print(self.get_parameter(f'offsets.{joint}').value)\n"
+        "        print(self.get_parameter('gain').value)\n",
+        encoding="utf-8",
+    )
+    params = tmp_path / "trim.yaml"
+    params.write_text(
+        "trim:\n  ros__parameters:\n    gain: 2.5\n    offsets: {a: 0.5, b: 1.0}\n"
+        "    other_node_only: {x: 1}\n",
+        encoding="utf-8",
+    )
+    code = main(["import-rclpy", str(node)])
+    without = capsys.readouterr()
+    assert code == 1 and "read with .value, the params file deciding its type" in without.err
+    code = main(["import-rclpy", str(node), "--params-file", str(params)])
+    captured = capsys.readouterr()
+    assert code == 0, captured.err
+    parameters = yaml.safe_load(captured.out)["parameters"]
+    assert parameters["offsets"] == {"type": "double", "for_each": "joints"}
+    assert parameters["gain"] == {"type": "double", "default": 2.5}
+    assert parameters["other_node_only"] == {"x": {"type": "int", "default": 1}}
