@@ -133,6 +133,12 @@ class _Converter:
                 f"read {len(self.unit.files)} other file(s) of the node's package, never run: "
                 + ", ".join(self.unit.files),
             )  # fmt: skip
+        if self.unit.skipped:
+            self.note(
+                Location(self.unit.file, 1, 1), "",
+                "files of the package not read (what they declare is not in the schema): "
+                + "; ".join(self.unit.skipped),
+            )  # fmt: skip
         data: dict[str, Any] = {"genparams": 1, "name": self.name}
         if self.unit.docstring:
             data["description"] = " ".join(self.unit.docstring.strip().split("\n\n")[0].split())

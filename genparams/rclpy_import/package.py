@@ -59,16 +59,16 @@ class Package:
         if path == self.node_file or not self._reachable(path):
             return None
         if len(self.read) >= MAX_FILES:
-            self.skipped.append(f"{path}: more than {MAX_FILES} files")
+            self.skipped.append(f"{self.shown(path)}: more than {MAX_FILES} files read")
             return None
         try:
             if path.stat().st_size > MAX_BYTES:
-                self.skipped.append(f"{path}: larger than {MAX_BYTES} bytes")
+                self.skipped.append(f"{self.shown(path)}: larger than {MAX_BYTES} bytes")
                 return None
             text = path.read_text(encoding="utf-8")
             tree = ast.parse(text, filename=str(path))
         except (OSError, UnicodeDecodeError, SyntaxError, ValueError, RecursionError) as exc:
-            self.skipped.append(f"{path}: {type(exc).__name__}")
+            self.skipped.append(f"{self.shown(path)}: cannot be read ({type(exc).__name__})")
             return None
         self.read.append(path)
         found = ModuleFile(path, tree, SourceFile(_named(path), tuple(text.splitlines())))

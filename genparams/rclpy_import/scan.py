@@ -102,7 +102,7 @@ class _Scanner:
         file = self.view.source.name if self.view is not None else ""
         return Unit(
             name, node, ast.get_docstring(node), tuple(c.found), tuple(c.options),
-            tuple(c.afterwards), tuple(c.reads), files, file,
+            tuple(c.afterwards), tuple(c.reads), files, file, tuple(package.skipped),
         )  # fmt: skip
 
     def scan_module(self, view: ModuleView, own: list[ast.stmt]) -> Unit:

@@ -250,3 +250,22 @@ def test_reads_of_a_node_declaring_from_its_overrides_take_the_file_s_types(
     assert parameters["offsets"] == {"type": "double", "for_each": "joints"}
     assert parameters["gain"] == {"type": "double", "default": 2.5}
     assert parameters["other_node_only"] == {"x": {"type": "int", "default": 1}}
+
+
+def test_a_file_of_the_package_that_cannot_be_parsed_is_named(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    _write(tmp_path, {
+        "pkg/package.xml": "<package/>\n",
+        "pkg/pkg/__init__.py": "",
+        "pkg/pkg/broken.py": "RATE = (\n",
+        "pkg/pkg/node.py": (
+            "from .broken import RATE\n\n\nclass N:\n    def __init__(self):\n"
+            "        self.declare_parameter('rate', RATE)\n        self.declare_parameter('x', 1)\n"
+        ),
+    })  # fmt: skip
+    code = main(["import-rclpy", str(tmp_path / "pkg" / "pkg" / "node.py")])
+    err = capsys.readouterr().err
+    assert code == 1
+    assert "note: files of the package not read" in err
+    assert "pkg/broken.py: cannot be read (SyntaxError)" in err
