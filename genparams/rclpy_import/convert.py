@@ -29,21 +29,17 @@ from genparams.rclpy_import.features import (
 )
 from genparams.rclpy_import.found import Found, Unit
 from genparams.rclpy_import.from_file import entry_values, file_type, undeclared
-from genparams.rclpy_import.leaves import DescriptorCopy, condition_value, default_of, typed_leaf
+from genparams.rclpy_import.leaves import DescriptorCopy, default_of, typed_leaf
 from genparams.rclpy_import.placing import (
     FOR_EACH,
     ItemPlace,
     SchemaTree,
     item_place,
     key_list,
-    name_nodes,
-    uses,
     written_name,
 )
 from genparams.rclpy_import.scope import SharePath, unparsed
 from genparams.schema.errors import Location, SchemaProblem
-
-_CONDITION_TYPES = ("bool", "int", "double", "string")
 
 
 @dataclass(frozen=True)
@@ -55,6 +51,7 @@ class Declared:
     found: Found | None  # None: a parameter of the params file the node declares as given
     fate: Fate
     key: str | None = None
+    given_name: str = ""  # a parameter of the params file left out: its name there
 
 
 @dataclass(frozen=True)
@@ -95,6 +92,7 @@ class _Converter:
         self.overrides = overrides
         self.given_by = given_by
         self.from_file: list[str] = []  # parameters only the params file names
+        self.file_left_out: list[str] = []  # names of the params file no schema can hold
         self.schema = SchemaTree()
         self.fates: list[tuple[Found, Fate]] = []
         self.keys: dict[Found, str] = {}
@@ -135,12 +133,19 @@ class _Converter:
                 f"read {len(self.unit.files)} other file(s) of the node's package, never run: "
                 + ", ".join(self.unit.files),
             )  # fmt: skip
+        if self.unit.skipped:
+            self.note(
+                Location(self.unit.file, 1, 1), "",
+                "files of the package not read (what they declare is not in the schema): "
+                + "; ".join(self.unit.skipped),
+            )  # fmt: skip
         data: dict[str, Any] = {"genparams": 1, "name": self.name}
         if self.unit.docstring:
             data["description"] = " ".join(self.unit.docstring.strip().split("\n\n")[0].split())
         data["parameters"] = self.schema.tree
         declared = [Declared(f, o, self.keys.get(f)) for f, o in self.fates]
         declared += [Declared(None, EXACT, n) for n in self.from_file]
+        declared += [Declared(None, LEFT_OUT, None, n) for n in self.file_left_out]
         return RclpyImported(
             name=self.name,
             data=data,
@@ -156,10 +161,12 @@ class _Converter:
         them as the file gives them (automatically_declare_parameters_from_overrides)."""
         where = next(o.where for o in self.unit.options if o.option == AUTOMATIC)
         placed = set(self.schema.first) | set(self.from_file)
+        placed |= {n for n in self.overrides if self.schema.per_entry(n)}
         for name, leaf, reason in undeclared(self.overrides, placed, open_prefixes):
             problem = reason if leaf is None else self.schema.name_problem(name)
             if leaf is None or problem is not None:
                 self.warn(where, name, f"given by the params file: {problem}: left out")
+                self.file_left_out.append(name)
                 continue
             self.schema.place(name, leaf)
             self.from_file.append(name)
@@ -171,7 +178,7 @@ class _Converter:
     def from_params_file(self, found: Found, name: str, place: ItemPlace | None) -> list[Any]:
         """The values the params file gives what ``found`` reads."""
         if place is not None:
-            return entry_values(self.overrides, place) if place.tail else []
+            return entry_values(self.overrides, place)
         return [self.overrides[name]] if name in self.overrides else []
 
     def declared(self, read: Found) -> bool:
@@ -242,56 +249,89 @@ class _Converter:
         return exact
 
     def declaration(self, found: Found) -> Fate:
-        at = found.where
-        place: ItemPlace | None = None
-        name: Any
-        if found.name.problem is not None:
-            if found.runtime_loop is None:
-                what = found.name.problem.what
-                self.warn(at, "", f"a name computed at run time ({what}): parameter left out")
-                return LEFT_OUT
-            place, reason = self.per_item(found)
-            if place is None:
-                self.warn(at, written_name(found), f"{reason}: parameter left out")
-                return LEFT_OUT
-            name = place.key
-        else:
-            name = found.name.value
-        if not isinstance(name, str):
-            self.warn(at, "", f"the name {name!r} is not a string: parameter left out")
+        """Place one declaration (or read) in the schema; its fate."""
+        named = self.named(found)
+        if named is None:
             return LEFT_OUT
+        name, place = named
         # a per-item parameter's messages name it as written (``offsets.{joint}``)
         shown = written_name(found) if place is not None and not place.tail else name
+        checked = self.checked(found, name, place, shown)
+        if checked is None:
+            return LEFT_OUT
+        leaf, when, from_item = checked
+        return self.placed(found, name, place, shown, leaf, when, from_item)
+
+    def named(self, found: Found) -> tuple[str, ItemPlace | None] | None:
+        """The schema key of a declaration, and where a loop's item sits in it; None (with
+        a warning) when it has none."""
+        at = found.where
+        if found.name.problem is None:
+            name = found.name.value
+            if isinstance(name, str):
+                return name, None
+            self.warn(at, "", f"the name {name!r} is not a string: parameter left out")
+            return None
+        if found.runtime_loop is None:
+            what = found.name.problem.what
+            self.warn(at, "", f"a name computed at run time ({what}): parameter left out")
+            return None
+        place, reason = self.schema.per_item(found)
+        if place is None:
+            self.warn(at, written_name(found), f"{reason}: parameter left out")
+            return None
+        return place.key, place
+
+    def checked(
+        self, found: Found, name: str, place: ItemPlace | None, shown: str
+    ) -> tuple[dict[str, Any], dict[str, Any] | None, bool] | None:
+        """The leaf, the ``when`` and whether the default is computed from the loop's
+        item; None (with a warning) when the declaration cannot be one."""
+        at = found.where
         if found.nested is not None:
             self.warn(at, shown, f"declared inside {found.nested}: parameter left out")
-            return LEFT_OUT
+            return None
         when: dict[str, Any] | None = None
         if found.condition is not None:
-            when, reason = self.when(found)
+            when, reason = self.schema.when(found)
             if when is None:
                 self.warn(at, shown, f"declared only under a condition ({found.condition}): "
                           f"{reason}: parameter left out")  # fmt: skip
-                return LEFT_OUT
+                return None
         from_item = place is not None and place.tail and _computed_from_item(found)
         if found.value.problem is not None and not from_item:
             self.warn(at, shown, f"value computed at run time ({found.value.problem.what}): "
                       "parameter left out")  # fmt: skip
-            return LEFT_OUT
+            return None
         if place is not None and place.tail:
             problem = self.schema.entry_problem(place, key_list(found))
         else:
             problem = self.schema.name_problem(name)
         if problem is not None:
             self.warn(at, shown, f"{problem}: parameter left out")
-            return LEFT_OUT
+            return None
         leaf, problem = typed_leaf(found)
         if leaf is None:
             self.warn(at, shown, f"{problem}: parameter left out")
-            return LEFT_OUT
+            return None
         if place is not None and leaf.get("optional"):
             self.warn(at, shown, f"one parameter per item of {found.runtime_loop}, with no value: "
                       f"{place.what} needs one: parameter left out")  # fmt: skip
-            return LEFT_OUT
+            return None
+        return leaf, when, bool(from_item)
+
+    def placed(
+        self,
+        found: Found,
+        name: str,
+        place: ItemPlace | None,
+        shown: str,
+        leaf: dict[str, Any],
+        when: dict[str, Any] | None,
+        from_item: bool,
+    ) -> Fate:
+        """Put the leaf in the tree, with the notes on how it was read; its fate."""
+        at = found.where
         schema_type = leaf["type"]
         exact = True
         if from_item:
@@ -344,89 +384,6 @@ class _Converter:
         self.keys[found] = name
         return EXACT if exact else APPROXIMATE
 
-    def per_item(self, found: Found) -> tuple[ItemPlace | None, str]:
-        """A declaration in a loop over a string_array parameter's value, named by the
-        item (``joint``, ``f"offsets.{joint}"``) or by the item and more
-        (``f"gains.{joint}.p"``, also as ``declare_parameters(f"gains.{joint}", ...)``):
-        where the item sits in its name, or why it cannot be imported."""
-        loop = found.runtime_loop
-        what = found.name.problem.what if found.name.problem is not None else "the name"
-        computed = f"one parameter per item of {loop}, its name computed from the item"
-        if found.name_is_item:
-            computed = f"one parameter per item of {loop}, named by the item"
-        place = item_place(found)
-        if place is None:
-            variable = found.loop_variable
-            if variable is None or not any(uses(n, variable) for n in name_nodes(found)):
-                return None, f"a name computed at run time ({what})"
-            return None, (
-                f"{computed}: only a name holding the item as one whole part between dots "
-                "translates"
-            )
-        if place.open:
-            return self.open_entry(found, place, computed)
-        key = found.loop_parameter
-        target = self.schema.first.get(key) if key is not None else None
-        leaf = self.schema.leaf(key) if key is not None and target is not None else None
-        if (
-            leaf is None
-            or leaf.get("type") != "string_array"
-            or "default" not in leaf
-            or "when" in leaf
-            or FOR_EACH in leaf
-        ):
-            return None, (
-                f"{computed}: the loop must run over a string_array parameter declared "
-                "before it, with a value and no condition"
-            )
-        if found.condition is not None:
-            return None, f"{computed}, under a condition: {place.what} has no when"
-        if found.in_list and not place.tail:
-            return None, f"{computed}, in a declare_parameters list"
-        return place, ""
-
-    def open_entry(
-        self, found: Found, place: ItemPlace, computed: str
-    ) -> tuple[ItemPlace | None, str]:
-        """A declaration in a loop over the keys found under a prefix in the overrides:
-        a parameter of an open group when it is named ``<prefix>.<key>.<field>``."""
-        prefix = found.loop_prefix
-        under = f"one entry per key found under {prefix!r} in the overrides"
-        if not place.tail:
-            return None, (
-                f"{computed}: one value per key found under {prefix!r} in the overrides: an "
-                f"open group holds parameters of each key ({prefix}.<key>.<field>)"
-            )
-        if place.head != prefix:
-            return None, (
-                f"{computed}: the keys are found under {prefix!r} in the overrides, the name "
-                f"puts them under {place.head or 'the top level'!r}: an open group holds "
-                f"{under}, under {prefix!r} itself"
-            )
-        if found.condition is not None:
-            return None, f"{computed}, under a condition: {place.what} has no when"
-        return place, ""
-
-    def when(self, found: Found) -> tuple[dict[str, Any] | None, str]:
-        """The ``when:`` of a declaration under ``if``, or why it cannot have one."""
-        simple = "only == or in against literals of a parameter declared before it translates"
-        if found.when is None:
-            return None, simple
-        name, values = found.when
-        leaf = self.schema.leaf(name) if name in self.schema.first else None
-        if leaf is None:
-            return None, f"{name!r} is not a parameter imported before it"
-        kind = leaf.get("type")
-        if kind not in _CONDITION_TYPES or "default" not in leaf or "when" in leaf:
-            return None, (
-                f"{name!r} must be a bool, int, double or string parameter with a value and "
-                "no condition of its own"
-            )
-        kept = [condition_value(kind, v) for v in values]
-        if any(v is None for v in kept):
-            return None, f"a value compared with {name!r} is not a {kind}"
-        return {name: kept[0] if len(kept) == 1 else kept}, ""
-
 
 def _computed_from_item(found: Found) -> bool:
     """A value computed from the loop's item that a sample item gives a value of."""
@@ -437,6 +394,6 @@ def _outcome(declared: Declared) -> Outcome:
     """A declaration's fate, as the importers report it: by the name the node gives it."""
     found, key = declared.found, declared.key or ""
     if found is None:
-        return Outcome(key, declared.fate, key)
+        return Outcome(key or declared.given_name, declared.fate, key)
     name = found.name.value if isinstance(found.name.value, str) else written_name(found)
     return Outcome(name or key or unparsed(found.at), declared.fate, key)

@@ -40,7 +40,7 @@ def what_it_needs(found: NodeOption, every_read: bool = False) -> str:
         return (
             f"{found.construct}: declares whatever the params file names, which a schema "
             f"cannot state: only reads of <prefix>.<key>.<field> in {_LOOP} translate "
-            "(an open group)"
+            "(an open group); with --params-file, the file's parameters are taken"
         )
     how = (
         "{k.split('.')[0] for k in ...}"

@@ -119,6 +119,7 @@ class Unit:
     reads: tuple[Found, ...] = ()  # self.get_parameter(name) calls
     files: tuple[str, ...] = ()  # every other file of the package the scan read
     file: str = ""  # the node file, as given
+    skipped: tuple[str, ...] = ()  # files of the package not read, each with the reason
 
 
 def descriptor_of(found: Found) -> DescriptorValue | None:

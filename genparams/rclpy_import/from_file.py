@@ -23,9 +23,10 @@ def file_type(values: list[Any]) -> str | None:
 
 
 def entry_values(overrides: Mapping[str, Any], place: ItemPlace) -> list[Any]:
-    """The values the file gives the entries of a group (``robots.<key>.battery_low``)."""
+    """The values the file gives the entries of a group (``robots.<key>.battery_low``), or
+    the items of a per-item parameter (``offsets.<key>``)."""
     head = f"{place.head}." if place.head else ""
-    tail = f".{place.tail}"
+    tail = f".{place.tail}" if place.tail else ""
     out = []
     for name, value in overrides.items():
         if name.startswith(head) and name.endswith(tail):

@@ -3,8 +3,9 @@
 The package's root is the nearest folder above the node file holding ``package.xml``,
 ``setup.py`` or ``pyproject.toml``. Relative imports (``from .driver import Driver``)
 and the package's own absolute ones (``from my_pkg.config import RATE``) are followed
-to files under that root; anything else (rclpy, numpy, other packages) is not. Files are
-parsed, never run, and at most ``MAX_FILES`` of them are read.
+to files under that root, and so are imports of a ROS package beside it (``package.xml``
+in both: another package of the same workspace or repository); anything else (rclpy,
+numpy) is not. Files are parsed, never run, and at most ``MAX_FILES`` of them are read.
 """
 
 from __future__ import annotations
@@ -17,8 +18,10 @@ from genparams.rclpy_import.found import SourceFile
 
 MAX_FILES = 32  # files of the package read besides the node file
 MAX_BYTES = 1_000_000  # a larger file is not read
-_MARKERS = ("package.xml", "setup.py", "pyproject.toml")
+_ROS_MARKER = "package.xml"
+_MARKERS = (_ROS_MARKER, "setup.py", "pyproject.toml")
 _MAX_UP = 6  # folders above the node file searched for the root
+_MAX_SIBLINGS = 64  # folders beside the root looked at for other packages
 
 
 @dataclass(frozen=True)
@@ -37,6 +40,7 @@ class Package:
     read: list[Path] = field(default_factory=list)
     skipped: list[str] = field(default_factory=list)  # files not read, with the reason
     _modules: dict[Path, ModuleFile | None] = field(default_factory=dict)
+    _beside: list[Path] | None = None  # the packages beside the root, once looked up
 
     @classmethod
     def of(cls, node_file: Path) -> Package:
@@ -52,19 +56,19 @@ class Package:
         if path in self._modules:
             return self._modules[path]
         self._modules[path] = None
-        if path == self.node_file or not self._inside(path):
+        if path == self.node_file or not self._reachable(path):
             return None
         if len(self.read) >= MAX_FILES:
-            self.skipped.append(f"{path}: more than {MAX_FILES} files")
+            self.skipped.append(f"{self.shown(path)}: more than {MAX_FILES} files read")
             return None
         try:
             if path.stat().st_size > MAX_BYTES:
-                self.skipped.append(f"{path}: larger than {MAX_BYTES} bytes")
+                self.skipped.append(f"{self.shown(path)}: larger than {MAX_BYTES} bytes")
                 return None
             text = path.read_text(encoding="utf-8")
             tree = ast.parse(text, filename=str(path))
         except (OSError, UnicodeDecodeError, SyntaxError, ValueError, RecursionError) as exc:
-            self.skipped.append(f"{path}: {type(exc).__name__}")
+            self.skipped.append(f"{self.shown(path)}: cannot be read ({type(exc).__name__})")
             return None
         self.read.append(path)
         found = ModuleFile(path, tree, SourceFile(_named(path), tuple(text.splitlines())))
@@ -84,7 +88,7 @@ class Package:
             return _file(base, parts)
         if not parts:
             return None
-        bases = [self.root, self.root / "src", *self._ancestors(importer)]
+        bases = [self.root, self.root / "src", *self._ancestors(importer), *self._siblings()]
         for base in bases:
             found = _file(base, parts)
             if found is not None:
@@ -103,6 +107,24 @@ class Package:
             return str(path.relative_to(self.root))
         return str(path)
 
+    def _siblings(self) -> list[Path]:
+        """The other ROS packages beside the root's (``package.xml`` in each: a workspace
+        or repository of packages), for an absolute import of one of them
+        (``from diagnostic_updater import Updater``)."""
+        if self._beside is not None:
+            return self._beside
+        self._beside = []
+        if self.root is None or not (self.root / _ROS_MARKER).is_file():
+            return self._beside
+        try:
+            folders = sorted(self.root.parent.iterdir())[:_MAX_SIBLINGS]
+        except OSError:
+            return self._beside
+        for folder in folders:
+            if folder != self.root and (folder / _ROS_MARKER).is_file():
+                self._beside += [folder, folder / "src"]
+        return self._beside
+
     def _ancestors(self, importer: Path) -> list[Path]:
         out = []
         for folder in importer.resolve().parents:
@@ -110,6 +132,14 @@ class Package:
                 break
             out.append(folder)
         return out
+
+    def _reachable(self, path: Path) -> bool:
+        """In the package, or in a package beside it."""
+        if self.root is None:
+            return False
+        return path.resolve().is_relative_to(self.root.parent) and any(
+            path.resolve().is_relative_to(base) for base in [self.root, *self._siblings()]
+        )
 
     def _inside(self, path: Path) -> bool:
         return self.root is not None and path.resolve().is_relative_to(self.root)

@@ -22,14 +22,20 @@ from __future__ import annotations
 
 import ast
 import difflib
-from collections.abc import Iterator, Mapping
 from pathlib import Path
-from typing import Any
 
 from genparams.importing import LEFT_OUT
 from genparams.rclpy_import.features import AUTOMATIC
 from genparams.rclpy_import.found import Found
 from genparams.rclpy_import.node_file import ImportedNode
+from genparams.rclpy_import.patch_shapes import (
+    always_set,
+    body_of,
+    free_attribute,
+    only_declares,
+    read_of,
+    self_calls,
+)
 from genparams.rclpy_import.placing import item_place
 from genparams.rclpy_import.reads import DECLARE_ONE
 from genparams.rclpy_import.source_edits import (
@@ -42,7 +48,6 @@ from genparams.rclpy_import.source_edits import (
 from genparams.rclpy_import.values import Evaluator, Scope, UntranslatableError
 from genparams.runtime.core.naming import attribute_parts, class_name, module_name
 
-_READ_ATTRIBUTES = ("value",)
 LINE_LENGTH = 100  # the longest line a rewritten call is written on (ruff's E501 at 100)
 
 
@@ -73,6 +78,8 @@ def unchanged_reason(node: ImportedNode) -> str:
     declared = [o.found for o in node.imported.declared if o.found and o.found.read is None]
     if declared and not any(f.receiver_is_self for f in declared):
         return "only declarations on self in a class are rewritten"
+    if not declared:
+        return "no statement of the node declares a parameter the schema holds"
     return (
         "every declaring statement also declares a parameter left out (see warnings), so "
         "it stays as written"
@@ -104,7 +111,7 @@ class _Patcher:
         }
         self.schema = node.imported.name
         self.class_name = class_name(self.schema)
-        self.attribute = _free_attribute(cls)
+        self.attribute = free_attribute(cls)
         self.names = node.imported.imported_names
         self.edits: list[Edit] = []
         self.removed: list[ast.stmt] = []
@@ -201,7 +208,7 @@ class _Patcher:
             if any(o == LEFT_OUT for _, o in items):
                 self.keep_left_out(statement, items)
                 continue
-            if isinstance(statement, ast.For) and not _only_declares(statement):
+            if isinstance(statement, ast.For) and not only_declares(statement):
                 continue
             out[statement] = [f for f, _ in items]
         return out
@@ -213,7 +220,7 @@ class _Patcher:
         parent = self.parents.get(found.statement)
         if not isinstance(parent, (ast.For, ast.If)) or found.statement not in parent.body:
             return None
-        if not _only_declares(parent):
+        if not only_declares(parent):
             return None
         if any(LEFT_OUT in outcomes.get(s, [LEFT_OUT]) for s in parent.body):
             return None
@@ -330,7 +337,7 @@ class _Patcher:
 
     def typed_read_span(self, call: ast.Call, name: str) -> Edit | None:
         """``<call>.value`` or ``<call>.get_parameter_value().x_value`` -> a typed read."""
-        outer = _read_of(call, self.parents)
+        outer = read_of(call, self.parents)
         if outer is None:
             return None
         start, end = self.source.span(outer)
@@ -353,7 +360,7 @@ class _Patcher:
     def fill_emptied(self, keep: ast.stmt | None) -> None:
         """A block whose every statement was removed gets ``pass``."""
         for statement in self.removed:
-            body = _body_of(statement, self.parents)
+            body = body_of(statement, self.parents)
             if body is None or statement is not body[0] or keep in body:
                 continue
             if not all(s in self.removed for s in body):
@@ -366,8 +373,8 @@ class _Patcher:
     def rewrite_reads(self) -> None:
         scope = Scope(class_name=self.cls.name)
         taken = [(e.start, e.end) for e in self.edits]
-        reads = [(c, False) for c in _self_calls(self.cls, "get_parameter")]
-        reads += [(c, True) for c in _self_calls(self.cls, "get_parameter_or")]
+        reads = [(c, False) for c in self_calls(self.cls, "get_parameter")]
+        reads += [(c, True) for c in self_calls(self.cls, "get_parameter_or")]
         for call, has_alternative in reads:
             arguments = len(call.args) + len(call.keywords)
             if not call.args or arguments > (2 if has_alternative else 1):
@@ -380,9 +387,9 @@ class _Patcher:
                 continue
             # get_parameter_or gives its alternative for a parameter not set (or not
             # declared): the typed read says None there, so only one always set is read.
-            if has_alternative and not _always_set(self.node.imported.data, name):
+            if has_alternative and not always_set(self.node.imported.data, name):
                 continue
-            outer = _read_of(call, self.parents)
+            outer = read_of(call, self.parents)
             if outer is None:
                 continue
             start, end = self.source.span(outer)
@@ -399,87 +406,3 @@ class _Patcher:
         last = max((s.end_lineno or s.lineno for s in imports), default=0)
         at = self.source.starts[last]
         self.edits.append(Edit(at, at, line))
-
-
-def _read_of(call: ast.Call, parents: dict[ast.AST, ast.AST]) -> ast.AST | None:
-    parent = parents.get(call)
-    if isinstance(parent, ast.Attribute) and parent.attr in _READ_ATTRIBUTES:
-        return parent
-    if isinstance(parent, ast.Attribute) and parent.attr == "get_parameter_value":
-        value_call = parents.get(parent)
-        outer = parents.get(value_call) if value_call is not None else None
-        if (
-            isinstance(value_call, ast.Call)
-            and not value_call.args
-            and isinstance(outer, ast.Attribute)
-            and outer.attr.endswith("_value")
-        ):
-            return outer
-    return None
-
-
-def _always_set(schema: Mapping[str, Any], name: str) -> bool:
-    """Whether the schema's parameter ``name`` holds a value whenever the node runs: it
-    is declared unconditionally, under its own name (not one per item), and has a default
-    or must be given one (not optional)."""
-    entry: Any = schema.get("parameters", {})
-    for part in name.split("."):
-        if not isinstance(entry, dict) or part not in entry:
-            return False
-        entry = entry[part]
-    return (
-        isinstance(entry, dict)
-        and not entry.get("optional")
-        and "when" not in entry
-        and "for_each" not in entry  # per item: no parameter has the key's own name
-    )
-
-
-def _self_calls(root: ast.AST, method: str) -> Iterator[ast.Call]:
-    for node in ast.walk(root):
-        if (
-            isinstance(node, ast.Call)
-            and isinstance(node.func, ast.Attribute)
-            and node.func.attr == method
-            and isinstance(node.func.value, ast.Name)
-            and node.func.value.id == "self"
-        ):
-            yield node
-
-
-def _only_declares(block: ast.For | ast.If) -> bool:
-    return (
-        all(
-            isinstance(s, ast.Expr)
-            and isinstance(s.value, ast.Call)
-            and isinstance(s.value.func, ast.Attribute)
-            and s.value.func.attr.startswith("declare_parameter")
-            for s in block.body
-        )
-        and not block.orelse
-    )
-
-
-def _body_of(statement: ast.stmt, parents: dict[ast.AST, ast.AST]) -> list[ast.stmt] | None:
-    parent = parents.get(statement)
-    if parent is None:
-        return None
-    for name in ("body", "orelse", "finalbody"):
-        body = getattr(parent, name, None)
-        if isinstance(body, list) and statement in body:
-            return body
-    return None
-
-
-def _free_attribute(cls: ast.ClassDef) -> str:
-    used = {
-        node.attr
-        for node in ast.walk(cls)
-        if isinstance(node, ast.Attribute)
-        and isinstance(node.value, ast.Name)
-        and node.value.id == "self"
-    }
-    for candidate in ("params", "typed_params", "genparams"):
-        if candidate not in used:
-            return candidate
-    return "genparams_params"

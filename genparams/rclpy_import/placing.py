@@ -10,9 +10,11 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from genparams.rclpy_import.found import Found
+from genparams.rclpy_import.leaves import condition_value
 from genparams.runtime.core.naming import ENTRY_KEY, NODE_PARAMETERS, is_ros_name
 
 FOR_EACH = "for_each"
+_CONDITION_TYPES = ("bool", "int", "double", "string")
 OVERRIDES_KEYS = "overrides"  # the for_each of an open group
 
 
@@ -63,6 +65,101 @@ class SchemaTree:
     tree: dict[str, Any] = field(default_factory=dict)
     first: dict[str, Found] = field(default_factory=dict)
     groups: dict[str, str] = field(default_factory=dict)
+
+    def per_item(self, found: Found) -> tuple[ItemPlace | None, str]:
+        """A declaration in a loop over a string_array parameter's value, named by the
+        item (``joint``, ``f"offsets.{joint}"``) or by the item and more
+        (``f"gains.{joint}.p"``, also as ``declare_parameters(f"gains.{joint}", ...)``):
+        where the item sits in its name, or why it cannot be imported."""
+        loop = found.runtime_loop
+        what = found.name.problem.what if found.name.problem is not None else "the name"
+        computed = f"one parameter per item of {loop}, its name computed from the item"
+        if found.name_is_item:
+            computed = f"one parameter per item of {loop}, named by the item"
+        place = item_place(found)
+        if place is None:
+            variable = found.loop_variable
+            if variable is None or not any(uses(n, variable) for n in name_nodes(found)):
+                return None, f"a name computed at run time ({what})"
+            return None, (
+                f"{computed}: only a name holding the item as one whole part between dots "
+                "translates"
+            )
+        if place.open:
+            return self.open_entry(found, place, computed)
+        key = found.loop_parameter
+        target = self.first.get(key) if key is not None else None
+        leaf = self.leaf(key) if key is not None and target is not None else None
+        if (
+            leaf is None
+            or leaf.get("type") != "string_array"
+            or "default" not in leaf
+            or "when" in leaf
+            or FOR_EACH in leaf
+        ):
+            return None, (
+                f"{computed}: the loop must run over a string_array parameter declared "
+                "before it, with a value and no condition"
+            )
+        if found.condition is not None:
+            return None, f"{computed}, under a condition: {place.what} has no when"
+        if found.in_list and not place.tail:
+            return None, f"{computed}, in a declare_parameters list"
+        return place, ""
+
+    def open_entry(
+        self, found: Found, place: ItemPlace, computed: str
+    ) -> tuple[ItemPlace | None, str]:
+        """A declaration in a loop over the keys found under a prefix in the overrides:
+        a parameter of an open group when it is named ``<prefix>.<key>.<field>``."""
+        prefix = found.loop_prefix
+        under = f"one entry per key found under {prefix!r} in the overrides"
+        if not place.tail:
+            return None, (
+                f"{computed}: one value per key found under {prefix!r} in the overrides: an "
+                f"open group holds parameters of each key ({prefix}.<key>.<field>)"
+            )
+        if place.head != prefix:
+            return None, (
+                f"{computed}: the keys are found under {prefix!r} in the overrides, the name "
+                f"puts them under {place.head or 'the top level'!r}: an open group holds "
+                f"{under}, under {prefix!r} itself"
+            )
+        if found.condition is not None:
+            return None, f"{computed}, under a condition: {place.what} has no when"
+        return place, ""
+
+    def when(self, found: Found) -> tuple[dict[str, Any] | None, str]:
+        """The ``when:`` of a declaration under ``if``, or why it cannot have one."""
+        simple = "only == or in against literals of a parameter declared before it translates"
+        if found.when is None:
+            return None, simple
+        name, values = found.when
+        leaf = self.leaf(name) if name in self.first else None
+        if leaf is None:
+            return None, f"{name!r} is not a parameter imported before it"
+        kind = leaf.get("type")
+        if kind not in _CONDITION_TYPES or "default" not in leaf or "when" in leaf:
+            return None, (
+                f"{name!r} must be a bool, int, double or string parameter with a value and "
+                "no condition of its own"
+            )
+        kept = [condition_value(kind, v) for v in values]
+        if any(v is None for v in kept):
+            return None, f"a value compared with {name!r} is not a {kind}"
+        return {name: kept[0] if len(kept) == 1 else kept}, ""
+
+    def per_entry(self, name: str) -> bool:
+        """Whether ``name`` is an entry of a per-item parameter or of a group
+        (``offsets.a`` under ``offsets: {for_each: joints}``): the schema states it."""
+        node: Any = self.tree
+        for part in name.split(".")[:-1]:
+            if not isinstance(node, dict) or part not in node:
+                return False
+            node = node[part]
+            if isinstance(node, dict) and FOR_EACH in node:
+                return True
+        return False
 
     def leaf(self, name: str) -> dict[str, Any] | None:
         node: Any = self.tree

@@ -119,6 +119,9 @@ class Resolver:
         other = self._view(target, depth + 1)
         for alias in statement.names:
             local = alias.asname or alias.name
+            if alias.name == "*" and other is not None:
+                _take_all(view, other)
+                continue
             if other is not None and _take(view, local, other, alias.name):
                 continue
             sub = self.package.submodule(target, alias.name)
@@ -151,6 +154,15 @@ def _take(view: ModuleView, local: str, other: ModuleView, name: str) -> bool:
         view.functions[local] = other.functions[name]
         return True
     return False
+
+
+def _take_all(view: ModuleView, other: ModuleView) -> None:
+    """``from .module import *``: every name ``other`` binds, unless ``view`` binds it."""
+    for name in [*other.constants, *other.classes, *other.functions]:
+        if not name.startswith("_") and "." not in name:
+            known = name in view.constants or name in view.classes or name in view.functions
+            if not known:
+                _take(view, name, other, name)
 
 
 def _namespace(view: ModuleView, local: str, other: ModuleView) -> None:

@@ -32,53 +32,25 @@ from genparams.rclpy_import.reads import (
 )
 from genparams.rclpy_import.resolve import ClassFound, ModuleView, Resolver, lookup_class
 from genparams.rclpy_import.scope import Scope, UntranslatableError, unparsed
+from genparams.rclpy_import.shapes import (
+    OPEN_OPTIONS,
+    called,
+    declares,
+    defines,
+    guards_redeclaring,
+    hands_node,
+    is_helper,
+    is_node_class,
+    super_called,
+)
 from genparams.rclpy_import.values import Evaluator
 
-# Node(...) options and calls that make parameters whose names come from params files.
-OPEN_OPTIONS = ("automatically_declare_parameters_from_overrides", "allow_undeclared_parameters")
 # Calls that change declared parameters after the fact: the schema cannot follow them.
 AFTERWARDS = {
     "set_descriptor": "set_descriptor() changes a descriptor after its declaration",
     "undeclare_parameter": "undeclare_parameter() removes a parameter after its declaration",
 }
 _MAX_FOLLOWED = 6  # helpers and objects followed inside one another
-
-
-def declares(node: ast.AST) -> bool:
-    return any(
-        isinstance(n, ast.Call)
-        and isinstance(n.func, ast.Attribute)
-        and n.func.attr in (DECLARE_ONE, DECLARE_MANY)
-        for n in ast.walk(node)
-    )
-
-
-def opens(node: ast.AST) -> bool:
-    """Whether ``node`` lets params files name parameters (see OPEN_OPTIONS, BY_PREFIX)."""
-    return any(
-        (isinstance(n, ast.keyword) and n.arg in OPEN_OPTIONS)
-        or (isinstance(n, ast.Attribute) and n.attr in (BY_PREFIX, OVERRIDES))
-        for n in ast.walk(node)
-    )
-
-
-def is_helper(function: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
-    """A function that declares a parameter named by one of its arguments
-    (``def get_param(self, name, default)``): it is read where it is called."""
-    names = {a.arg for a in [*function.args.args, *function.args.kwonlyargs]}
-    for node in ast.walk(function):
-        if (
-            isinstance(node, ast.Call)
-            and isinstance(node.func, ast.Attribute)
-            and node.func.attr == DECLARE_ONE
-        ):
-            first = node.args[0] if node.args else None
-            first = next((k.value for k in node.keywords if k.arg == "name"), first)
-            if first is not None and any(
-                isinstance(n, ast.Name) and n.id in names for n in ast.walk(first)
-            ):
-                return True
-    return False
 
 
 def units(view: ModuleView, resolver: Resolver) -> list[Unit]:
@@ -130,7 +102,7 @@ class _Scanner:
         file = self.view.source.name if self.view is not None else ""
         return Unit(
             name, node, ast.get_docstring(node), tuple(c.found), tuple(c.options),
-            tuple(c.afterwards), tuple(c.reads), files, file,
+            tuple(c.afterwards), tuple(c.reads), files, file, tuple(package.skipped),
         )  # fmt: skip
 
     def scan_module(self, view: ModuleView, own: list[ast.stmt]) -> Unit:
@@ -169,7 +141,7 @@ class _Scanner:
                     continue
                 if is_helper(statement):
                     continue  # read where it is called
-                if any(_defines(c, statement.name) for c in nearer) and not _super_called(
+                if any(defines(c, statement.name) for c in nearer) and not super_called(
                     nearer, statement.name
                 ):
                     continue
@@ -238,8 +210,10 @@ class _Scanner:
             main_scope = replace(scope, local={**scope.local, **locals_of(statement)})
             self.walk(statement.body, main_scope, context)
             self.walk(statement.orelse, scope, context)
-        elif isinstance(statement, ast.If) and _guards_redeclaring(statement):
+        elif isinstance(statement, ast.If) and guards_redeclaring(statement):
+            self.expressions(statement.test, statement, scope, context)
             self.walk(statement.body, scope, context)  # declares once, whatever the test
+            self.walk(statement.orelse, scope, context)
         elif isinstance(statement, ast.If):
             inner = context.changed(
                 condition=context.condition or f"if {unparsed(statement.test)}",
@@ -366,13 +340,15 @@ class _Scanner:
         (``NmeaDriver(self)``): read as part of the node, where it is called."""
         if len(self.stack) >= _MAX_FOLLOWED or self.view is None:
             return
-        name = _called(call)
+        name = called(call)
         if name is None:
             return
         site = context.call_site or context.source.location(call)
         helper = scope.functions.get(name)
         module_function = self.view.functions.get(name)
-        if helper is not None and (helper in self.stack or not declares(helper)):
+        if helper is not None and (
+            helper in self.stack or not (declares(helper) or is_helper(helper))
+        ):
             return
         if helper is not None and (is_helper(helper) or (module_function and self.in_class)):
             source = module_function.module.source if module_function else context.source
@@ -384,14 +360,16 @@ class _Scanner:
                 self.followed.add(name)
             return
         cls = lookup_class(self.view, call.func)
-        if cls is None or cls.definition in self.stack or not _hands_self(call):
+        if cls is None or cls.definition in self.stack or not declares(cls.definition):
             return
-        if _is_node_class(cls.definition) or not declares(cls.definition):
-            return
+        if self.in_class and (not hands_node(call, True) or is_node_class(cls.definition)):
+            return  # a node class builds an object, and hands it itself
+        if not self.in_class and not (hands_node(call, False) or is_node_class(cls.definition)):
+            return  # the module's functions build a node, or hand one to an object
         self.followed.add(cls.definition.name)
         self.stack.append(cls.definition)
         try:
-            via = context.via or f"the object {cls.definition.name}(self)"
+            via = context.via or f"the object {unparsed(call, 40)}"
             self.object_methods(cls, via, site, call, scope)
         finally:
             self.stack.pop()
@@ -467,59 +445,3 @@ class _Scanner:
                 and node.func.attr == BY_PREFIX
             ):
                 self.option(node, context, f"{BY_PREFIX}()")
-
-
-def _called(call: ast.Call) -> str | None:
-    func = call.func
-    if isinstance(func, ast.Name):
-        return func.id
-    if isinstance(func, ast.Attribute) and isinstance(func.value, ast.Name):
-        return f"{func.value.id}.{func.attr}"
-    return None
-
-
-def _hands_self(call: ast.Call) -> bool:
-    """The node is given to the call: ``Driver(self)``, ``Driver(node=self)``."""
-    values = [*call.args, *(k.value for k in call.keywords)]
-    return any(isinstance(v, ast.Name) and v.id == "self" for v in values)
-
-
-def _is_node_class(cls: ast.ClassDef) -> bool:
-    """A class deriving from a Node is a node of its own, not an object of this one."""
-    return any("Node" in ast.unparse(base) for base in cls.bases)
-
-
-def _defines(cls: ClassFound, name: str) -> bool:
-    return any(
-        isinstance(s, (ast.FunctionDef, ast.AsyncFunctionDef)) and s.name == name
-        for s in cls.definition.body
-    )
-
-
-def _super_called(classes: list[ClassFound], name: str) -> bool:
-    """Whether one of ``classes`` calls ``super().name(...)``."""
-    for cls in classes:
-        for node in ast.walk(cls.definition):
-            if (
-                isinstance(node, ast.Call)
-                and isinstance(node.func, ast.Attribute)
-                and node.func.attr == name
-                and isinstance(node.func.value, ast.Call)
-                and isinstance(node.func.value.func, ast.Name)
-                and node.func.value.func.id == "super"
-            ):
-                return True
-    return False
-
-
-def _guards_redeclaring(statement: ast.If) -> bool:
-    """``if not self.has_parameter(name):`` with no else: it declares once, as a schema does."""
-    test = statement.test
-    return (
-        not statement.orelse
-        and isinstance(test, ast.UnaryOp)
-        and isinstance(test.op, ast.Not)
-        and isinstance(test.operand, ast.Call)
-        and isinstance(test.operand.func, ast.Attribute)
-        and test.operand.func.attr == "has_parameter"
-    )

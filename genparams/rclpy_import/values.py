@@ -11,12 +11,19 @@ from __future__ import annotations
 
 import ast
 import math
-import operator
 import os.path
 from collections.abc import Callable
 from dataclasses import replace
 from typing import Any
 
+from genparams.rclpy_import.ros_names import (
+    BINARY,
+    DESCRIPTOR_FIELDS,
+    MATH,
+    RANGE_FIELDS,
+    RCLPY_ENUMS,
+    ROS_TYPES,
+)
 from genparams.rclpy_import.scope import (
     Binding,
     DescriptorValue,
@@ -35,6 +42,8 @@ from genparams.rclpy_import.scope import (
 )
 
 __all__ = [
+    "RCLPY_ENUMS",
+    "ROS_TYPES",
     "DescriptorValue",
     "Evaluator",
     "RangeValue",
@@ -48,51 +57,6 @@ __all__ = [
     "unparsed",
 ]
 
-# rclpy's Parameter.Type members (and rcl_interfaces' ParameterType constants) -> schema types.
-ROS_TYPES = {
-    "BOOL": "bool",
-    "INTEGER": "int",
-    "DOUBLE": "double",
-    "STRING": "string",
-    "BYTE_ARRAY": "byte_array",
-    "BOOL_ARRAY": "bool_array",
-    "INTEGER_ARRAY": "int_array",
-    "DOUBLE_ARRAY": "double_array",
-    "STRING_ARRAY": "string_array",
-    "NOT_SET": "not_set",
-}
-DESCRIPTOR_FIELDS = (
-    "name",
-    "type",
-    "description",
-    "additional_constraints",
-    "read_only",
-    "dynamic_typing",
-    "floating_point_range",
-    "integer_range",
-)
-_RANGE_FIELDS = ("from_value", "to_value", "step")
-_BINARY: dict[type[ast.operator], Callable[[Any, Any], Any]] = {
-    ast.Add: operator.add,
-    ast.Sub: operator.sub,
-    ast.Mult: operator.mul,
-    ast.Div: operator.truediv,
-    ast.FloorDiv: operator.floordiv,
-    ast.Mod: operator.mod,
-    ast.Pow: operator.pow,
-}
-_MATH = {"pi": math.pi, "e": math.e, "tau": math.tau, "inf": math.inf, "nan": math.nan}
-# rclpy's QoS policy enums, often a parameter's default (an IntEnum: rclpy declares an int).
-RCLPY_ENUMS = {
-    **{f"QoSReliabilityPolicy.{k}": v for k, v in
-       {"SYSTEM_DEFAULT": 0, "RELIABLE": 1, "BEST_EFFORT": 2, "BEST_AVAILABLE": 4}.items()},
-    **{f"QoSDurabilityPolicy.{k}": v for k, v in
-       {"SYSTEM_DEFAULT": 0, "TRANSIENT_LOCAL": 1, "VOLATILE": 2, "BEST_AVAILABLE": 4}.items()},
-    **{f"QoSHistoryPolicy.{k}": v for k, v in
-       {"SYSTEM_DEFAULT": 0, "KEEP_LAST": 1, "KEEP_ALL": 2}.items()},
-    **{f"QoSLivelinessPolicy.{k}": v for k, v in
-       {"SYSTEM_DEFAULT": 0, "AUTOMATIC": 1, "MANUAL_BY_TOPIC": 3, "BEST_AVAILABLE": 5}.items()},
-}  # fmt: skip
 _MAX_DEPTH = 32  # constants defined through constants, never in a loop
 
 
@@ -151,13 +115,13 @@ class Evaluator:
                 return not operand
             if isinstance(operand, (int, float)) and not isinstance(operand, bool):
                 return -operand if isinstance(node.op, ast.USub) else operand
-        if isinstance(node, ast.BinOp) and type(node.op) in _BINARY:
+        if isinstance(node, ast.BinOp) and type(node.op) in BINARY:
             left, right = self.value(node.left), self.value(node.right)
             if _repeated(node.op, left, right):
                 return left * right if isinstance(left, list) else right * left
             if _same_kind(left, right) and not _too_large(node.op, left, right):
                 try:
-                    result = _BINARY[type(node.op)](left, right)
+                    result = BINARY[type(node.op)](left, right)
                 except (ArithmeticError, TypeError, ValueError):
                     pass
                 else:
@@ -248,8 +212,8 @@ class Evaluator:
             enum = ".".join(parts[-2:])
             if enum in RCLPY_ENUMS and (len(parts) == 2 or parts[-3] == "qos"):
                 return RCLPY_ENUMS[enum]
-            if head in ("math", *_NUMPY) and rest in _MATH:
-                return _MATH[rest]
+            if head in ("math", *_NUMPY) and rest in MATH:
+                return MATH[rest]
             if head in ("os", "environ") and "environ" in name:
                 raise UntranslatableError(node, "a value read from the environment")
             if head in ("self", self.scope.class_name) and rest in self.scope.class_constants:
@@ -387,13 +351,13 @@ class Evaluator:
             descriptor.fields.pop(name, None)
 
     def _range(self, node: ast.Call, *, integer: bool) -> RangeValue:
-        values: dict[str, Any] = dict.fromkeys(_RANGE_FIELDS, 0)
-        if len(node.args) > len(_RANGE_FIELDS):
+        values: dict[str, Any] = dict.fromkeys(RANGE_FIELDS, 0)
+        if len(node.args) > len(RANGE_FIELDS):
             raise UntranslatableError(node, f"the range {unparsed(node)!r}")
-        for name, argument in zip(_RANGE_FIELDS, node.args, strict=False):
+        for name, argument in zip(RANGE_FIELDS, node.args, strict=False):
             values[name] = self.value(argument)
         for keyword in node.keywords:
-            if keyword.arg not in _RANGE_FIELDS:
+            if keyword.arg not in RANGE_FIELDS:
                 raise UntranslatableError(node, f"the range {unparsed(node)!r}")
             values[keyword.arg] = self.value(keyword.value)
         if not all(_is_number(v) for v in values.values()):

@@ -138,3 +138,28 @@ def test_a_name_holding_a_slash_is_left_out_with_its_reason(
     code, out, err = run(capsys, str(source))
     assert code == 1 and "input_shape" not in out
     assert "input_shape/height: warning: a name holding '/': rclpy accepts it" in err
+
+
+def test_a_default_computed_from_another_parameter_is_kept_with_a_note(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = tmp_path / "gains.py"
+    source.write_text(
+        "class Gains:\n    def __init__(self):\n"
+        "        self.declare_parameter('joints', ['a', 'b'])\n"
+        "        self.declare_parameter('default_gain', 2.0)\n"
+        "        count = len(self.get_parameter('joints').value)\n"
+        "        self.declare_parameter('limits', [55.0] * count)\n"
+        "        for j in self.get_parameter('joints').value:\n"
+        "            gain = self.get_parameter('default_gain').value\n"
+        "            self.declare_parameter(f'gains.{j}', gain)\n",
+        encoding="utf-8",
+    )
+    code, out, err = run(capsys, str(source))
+    parameters = yaml.safe_load(out)["parameters"]
+    assert code == 0 and "warning" not in err
+    assert parameters["limits"] == {"type": "double_array", "default": [55.0, 55.0]}
+    assert parameters["gains"] == {"type": "double", "default": 2.0, "for_each": "joints"}
+    assert "limits: note: a default computed from the parameter(s) 'joints'" in err
+    assert "gains.{j}: note: a default computed from the parameter(s) 'default_gain'" in err
+    assert err.endswith("imported 4 of 4 parameters (2 approximately)\n")

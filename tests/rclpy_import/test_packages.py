@@ -142,3 +142,130 @@ def test_files_outside_the_package_are_never_read(
     assert code == 1 and "never run" not in err
     assert "rate: warning: value computed at run time (the variable 'RATE')" in err
     assert "gain: warning: value computed at run time (the variable 'GAIN')" in err
+
+
+def _write(root: Path, files: dict[str, str]) -> None:
+    for name, text in files.items():
+        path = root / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text, encoding="utf-8")
+
+
+def test_a_package_beside_it_star_imports_guards_and_a_node_built_by_main(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A monitor built in ``main()`` hands itself to a status publisher of a package beside
+    its own (re-exported by ``from ._x import *``), which declares its period and, unless
+    already declared, a flag; a driver node class the module's function builds declares
+    the rest."""
+    _write(tmp_path, {
+        "status_tools/package.xml": "<package/>\n",
+        "status_tools/status_tools/__init__.py": "from ._publisher import *  # noqa\n",
+        "status_tools/status_tools/_publisher.py": (
+            "class StatusPublisher:\n"
+            "    def __init__(self, node, period=1.0):\n"
+            "        self.node = node\n"
+            "        self.key = 'status.use_fqn'\n"
+            "        node.declare_parameter('status.period', period)\n"
+            "        if node.has_parameter(self.key):\n"
+            "            self.fqn = node.get_parameter(self.key).value\n"
+            "        else:\n"
+            "            self.fqn = node.declare_parameter(self.key, False).value\n"
+        ),
+        "watch/package.xml": "<package/>\n",
+        "watch/watch/__init__.py": "",
+        "watch/watch/driver.py": (
+            "from rclpy.node import Node\n\n\nclass WatchDriver(Node):\n"
+            "    def __init__(self):\n        super().__init__('watch')\n"
+            "        self.declare_parameter('limit', 90)\n"
+        ),
+        "watch/watch/monitor.py": (
+            "from status_tools import StatusPublisher\n\nfrom watch.driver import WatchDriver\n\n\n"
+            "def main():\n    node = WatchDriver()\n    node.declare_parameter('window', 1)\n"
+            "    StatusPublisher(node)\n\n\nif __name__ == '__main__':\n    main()\n"
+        ),
+    })  # fmt: skip
+    code = main(["import-rclpy", str(tmp_path / "watch" / "watch" / "monitor.py")])
+    captured = capsys.readouterr()
+    assert code == 0, captured.err
+    parameters = yaml.safe_load(captured.out)["parameters"]
+    assert parameters == {
+        "limit": {"type": "int", "default": 90},
+        "window": {"type": "int", "default": 1},
+        "status": {
+            "period": {"type": "double", "default": 1.0},
+            "use_fqn": {"type": "bool", "default": False},
+        },
+    }
+    read = captured.err.split("never run: ")[1].splitlines()[0]
+    assert "status_tools/_publisher.py" in read and "driver.py" in read
+
+
+def test_the_static_evaluator_reads_a_module_s_constants() -> None:
+    """The evaluator other readers use (a launch file's values): constants, arithmetic,
+    f-strings, share-directory paths; anything else names the construct."""
+    import ast
+
+    from genparams.rclpy_import.values import SharePath, UntranslatableError, evaluate_constant
+
+    module = ast.parse("RATE = 10.0\nNAME = 'cam'\nHALF = RATE / 2\n")
+
+    def value(text: str) -> object:
+        return evaluate_constant(ast.parse(text, mode="eval").body, module)
+
+    assert value("[HALF, np.pi / 2, f'{NAME}_link']") == [5.0, 1.5707963267948966, "cam_link"]
+    path = value("os.path.join(get_package_share_directory(NAME), 'config', 'a.yaml')")
+    assert isinstance(path, SharePath) and path == "$(find-pkg-share cam)/config/a.yaml"
+    with pytest.raises(UntranslatableError, match="the variable 'missing'"):
+        value("missing + 1")
+
+
+def test_reads_of_a_node_declaring_from_its_overrides_take_the_file_s_types(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    node = tmp_path / "trim.py"
+    node.write_text(
+        "from rclpy.node import Node\n\n\nclass Trim(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('trim', automatically_declare_parameters_from_overrides=True)\n"
+        "        self.declare_parameter('joints', ['a', 'b'])\n"
+        "        for joint in self.get_parameter('joints').value:\n"
+        "            print(self.get_parameter(f'offsets.{joint}').value)\n"
+        "        print(self.get_parameter('gain').value)\n",
+        encoding="utf-8",
+    )
+    params = tmp_path / "trim.yaml"
+    params.write_text(
+        "trim:\n  ros__parameters:\n    gain: 2.5\n    offsets: {a: 0.5, b: 1.0}\n"
+        "    other_node_only: {x: 1}\n",
+        encoding="utf-8",
+    )
+    code = main(["import-rclpy", str(node)])
+    without = capsys.readouterr()
+    assert code == 1 and "read with .value, the params file deciding its type" in without.err
+    code = main(["import-rclpy", str(node), "--params-file", str(params)])
+    captured = capsys.readouterr()
+    assert code == 0, captured.err
+    parameters = yaml.safe_load(captured.out)["parameters"]
+    assert parameters["offsets"] == {"type": "double", "for_each": "joints"}
+    assert parameters["gain"] == {"type": "double", "default": 2.5}
+    assert parameters["other_node_only"] == {"x": {"type": "int", "default": 1}}
+
+
+def test_a_file_of_the_package_that_cannot_be_parsed_is_named(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    _write(tmp_path, {
+        "pkg/package.xml": "<package/>\n",
+        "pkg/pkg/__init__.py": "",
+        "pkg/pkg/broken.py": "RATE = (\n",
+        "pkg/pkg/node.py": (
+            "from .broken import RATE\n\n\nclass N:\n    def __init__(self):\n"
+            "        self.declare_parameter('rate', RATE)\n        self.declare_parameter('x', 1)\n"
+        ),
+    })  # fmt: skip
+    code = main(["import-rclpy", str(tmp_path / "pkg" / "pkg" / "node.py")])
+    err = capsys.readouterr().err
+    assert code == 1
+    assert "note: files of the package not read" in err
+    assert "pkg/broken.py: cannot be read (SyntaxError)" in err

@@ -1,0 +1,114 @@
+"""Shapes of a node's source the scan recognises: what declares, what lets params files
+name parameters, helpers that declare what they are asked, guards against declaring twice,
+objects handed the node, base classes reached through ``super()``."""
+
+from __future__ import annotations
+
+import ast
+
+from genparams.rclpy_import.overrides import BY_PREFIX, OVERRIDES
+from genparams.rclpy_import.reads import DECLARE_MANY, DECLARE_ONE
+from genparams.rclpy_import.resolve import ClassFound
+
+# Node(...) options and calls that make parameters whose names come from params files.
+OPEN_OPTIONS = ("automatically_declare_parameters_from_overrides", "allow_undeclared_parameters")
+
+
+def declares(node: ast.AST) -> bool:
+    return any(
+        isinstance(n, ast.Call)
+        and isinstance(n.func, ast.Attribute)
+        and n.func.attr in (DECLARE_ONE, DECLARE_MANY)
+        for n in ast.walk(node)
+    )
+
+
+def opens(node: ast.AST) -> bool:
+    """Whether ``node`` lets params files name parameters (see OPEN_OPTIONS, BY_PREFIX)."""
+    return any(
+        (isinstance(n, ast.keyword) and n.arg in OPEN_OPTIONS)
+        or (isinstance(n, ast.Attribute) and n.attr in (BY_PREFIX, OVERRIDES))
+        for n in ast.walk(node)
+    )
+
+
+def is_helper(function: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
+    """A function that declares (or reads) a parameter named by one of its arguments
+    (``def get_param(self, name, default)``): it is read where it is called."""
+    names = {a.arg for a in [*function.args.args, *function.args.kwonlyargs]} - {"self"}
+    if function.name == "__init__":
+        return False  # a constructor is read where its object is built
+    for node in ast.walk(function):
+        if (
+            isinstance(node, ast.Call)
+            and isinstance(node.func, ast.Attribute)
+            and node.func.attr in (DECLARE_ONE, "get_parameter")
+        ):
+            first = node.args[0] if node.args else None
+            first = next((k.value for k in node.keywords if k.arg == "name"), first)
+            if first is not None and any(
+                isinstance(n, ast.Name) and n.id in names for n in ast.walk(first)
+            ):
+                return True
+    return False
+
+
+def called(call: ast.Call) -> str | None:
+    func = call.func
+    if isinstance(func, ast.Name):
+        return func.id
+    if isinstance(func, ast.Attribute) and isinstance(func.value, ast.Name):
+        return f"{func.value.id}.{func.attr}"
+    return None
+
+
+def hands_node(call: ast.Call, in_class: bool) -> bool:
+    """The node is given to the call: ``Driver(self)``, ``Driver(node=self)`` in a node
+    class; a variable (``Updater(node)``) in the module's functions."""
+    values = [*call.args, *(k.value for k in call.keywords)]
+    return any(isinstance(v, ast.Name) and (v.id == "self" or not in_class) for v in values)
+
+
+def is_node_class(cls: ast.ClassDef) -> bool:
+    """A class deriving from a Node is a node of its own, not an object of this one."""
+    return any("Node" in ast.unparse(base) for base in cls.bases)
+
+
+def defines(cls: ClassFound, name: str) -> bool:
+    return any(
+        isinstance(s, (ast.FunctionDef, ast.AsyncFunctionDef)) and s.name == name
+        for s in cls.definition.body
+    )
+
+
+def super_called(classes: list[ClassFound], name: str) -> bool:
+    """Whether one of ``classes`` calls ``super().name(...)``."""
+    for cls in classes:
+        for node in ast.walk(cls.definition):
+            if (
+                isinstance(node, ast.Call)
+                and isinstance(node.func, ast.Attribute)
+                and node.func.attr == name
+                and isinstance(node.func.value, ast.Call)
+                and isinstance(node.func.value.func, ast.Name)
+                and node.func.value.func.id == "super"
+            ):
+                return True
+    return False
+
+
+def guards_redeclaring(statement: ast.If) -> bool:
+    """``if not self.has_parameter(name): <declare>``, or ``if self.has_parameter(name):
+    <read> else: <declare>``: it declares once, whatever the test, as a schema does."""
+    test = statement.test
+    if isinstance(test, ast.UnaryOp) and isinstance(test.op, ast.Not):
+        if statement.orelse:
+            return False
+        test = test.operand
+    elif not statement.orelse or declares(ast.Module(statement.body, [])):
+        return False
+    return (
+        isinstance(test, ast.Call)
+        and isinstance(test.func, ast.Attribute)
+        and test.func.attr == "has_parameter"
+    )
