@@ -84,7 +84,6 @@ def test_a_schema_integer_too_long_for_any_type_is_invalid(
     assert "Traceback" not in stderr
 
 
-
 def test_an_integer_past_int64_is_shown_cut(tmp_path: Path) -> None:
     schema = tmp_path / "long.yaml"
     value = "0b" + "1" * 5000  # 1,506 decimal digits: Python writes it, the message cuts it
