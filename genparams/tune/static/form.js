@@ -42,7 +42,7 @@ function numberOf(kind, text) {
     return new InputError(`${JSON.stringify(trimmed)} is not a number (nan, inf and -inf are)`);
   }
   // An integer past 2^53 keeps its digits: a BigInt, written as typed (json.js).
-  if (/^-?\d+$/.test(trimmed) && !Number.isSafeInteger(value)) return BigInt(trimmed);
+  if (/^-?\d+$/.test(trimmed) && !Number.isSafeInteger(value) && JSON.rawJSON) return BigInt(trimmed);
   return value;
 }
 

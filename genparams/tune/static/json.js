@@ -25,8 +25,8 @@ export function namedFloat(text) {
 const INTEGER = /^-?\d+$/;
 function exactNumber(value, context) {
   if (typeof value !== "number" || Number.isSafeInteger(value)) return value;
-  const source = context?.source;
-  return typeof source === "string" && INTEGER.test(source) ? BigInt(source) : value;
+  const source = context?.source;  // JSON.parse source text access
+  return typeof source === "string" && INTEGER.test(source) && JSON.rawJSON ? BigInt(source) : value;
 }
 
 export function parseJson(text) {
@@ -36,7 +36,8 @@ export function parseJson(text) {
 
 export function stringifyJson(value) {
   return JSON.stringify(value, (key, item) => {
-    if (typeof item === "bigint") return JSON.rawJSON(String(item));
+    // A browser without JSON.rawJSON never makes a BigInt here (see exactNumber, numberOf).
+    if (typeof item === "bigint") return JSON.rawJSON ? JSON.rawJSON(String(item)) : Number(item);
     const name = floatName(item);
     return name === undefined ? item : { $float: name };
   });
