@@ -55,6 +55,9 @@ def md_code(text: str) -> str:
 # ---- reStructuredText ---------------------------------------------------------------------
 
 _RST_SPECIAL = re.compile(r"([\\`*_|])")
+# docutils turns ``scheme:rest`` into a live link (``javascript:alert(1)`` included):
+# a backslash before the colon keeps it text.
+_RST_URI_SCHEME = re.compile(r"(?<![\w.+-])([A-Za-z][A-Za-z0-9.+-]*):(?=\S)")
 
 
 def rst_text(text: str, indent: int = 0) -> str:
@@ -63,11 +66,13 @@ def rst_text(text: str, indent: int = 0) -> str:
     Every line is stripped (no accidental block quotes), markup characters are
     backslash-escaped, and a line starting with punctuation has that character
     escaped, so it can start no directive, field list, list or section rule.
+    The colon after a URI scheme is escaped too: no text becomes a link.
     """
     pad = " " * indent
     out = []
     for line in text.splitlines():
         line = _RST_SPECIAL.sub(r"\\\1", line.strip()).replace("::", "\\:\\:")
+        line = _RST_URI_SCHEME.sub(r"\1\\:", line)
         if line and not line[0].isalnum() and line[0] != "\\":
             line = "\\" + line
         out.append(line)

@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
+from decimal import Decimal
 from fractions import Fraction
 
 # Node names and their wildcards are name rules: runtime.naming holds them.
@@ -87,11 +88,17 @@ def ros_scalar(text: str, style: str | None) -> ScalarValue | NoValue:
     return text
 
 
+# int64 needs at most 19 decimal, 16 hex or 22 octal digits.
+_INT64_DIGITS = 22
+
+
 def _strtol(text: str) -> int | None:
     match = _STRTOL.fullmatch(text)
     if match is None:
         return None
     sign, digits = match.groups()
+    if len(digits.lstrip("0xX")) > _INT64_DIGITS:
+        return None  # past int64 in any base (strtol's ERANGE), without converting it
     if digits[:2] in ("0x", "0X"):
         value = int(digits[2:], 16)
     elif len(digits) > 1 and digits[0] == "0":
@@ -141,8 +148,8 @@ def _strtod(text: str) -> float | None:
 
 def _exact(number: str, hexadecimal: bool) -> Fraction:
     """The number a strtod spelling stands for, before rounding to a double."""
-    if not hexadecimal:
-        return Fraction(number)
+    if not hexadecimal:  # through Decimal: Fraction(str) refuses more than 4,300 digits
+        return Fraction(*Decimal(number).as_integer_ratio())
     sign = -1 if number.startswith("-") else 1
     digits, _, exponent = number.lstrip("+-")[2:].lower().partition("p")
     whole, _, fraction = digits.partition(".")

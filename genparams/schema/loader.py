@@ -24,6 +24,10 @@ from genparams.schema.nesting import check_nesting
 
 Path = tuple[str | int, ...]
 
+# An integer this long fits no parameter type, and Python would refuse to write it in
+# decimal (past 4,300 digits, about 14,280 bits) for a message: it is refused as read.
+MAX_INT_BITS = 14_000
+
 # Limits that keep hostile input cheap: a 2 MB schema (some 20,000 parameters) loads
 # in seconds; anything beyond fails at once, before it is built.
 MAX_NODES = 250_000
@@ -259,6 +263,18 @@ class _Builder:
                     self.location(node),
                     dotted(path),
                     f"invalid value: {repr(node.value)[:60]} cannot be read as {node.tag}",
+                )
+            )
+            return None
+        if isinstance(value, int) and value.bit_length() > MAX_INT_BITS:
+            # A hex or octal literal is read whatever its length, but no type holds it,
+            # and Python refuses to write it in decimal (past 4,300 digits) for a message.
+            self.problems.append(
+                SchemaProblem(
+                    self.location(node),
+                    dotted(path),
+                    f"invalid value: {repr(node.value)[:60]} is an integer of "
+                    f"{value.bit_length()} bits, too large for any parameter type",
                 )
             )
             return None

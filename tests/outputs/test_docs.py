@@ -8,10 +8,13 @@ import subprocess
 import sys
 from pathlib import Path
 
+import docutils.core  # type: ignore[import-untyped]
 import pytest
+from markdown_it import MarkdownIt
 
 from genparams.cli import main
 from tests.golden import EXAMPLE_SCHEMA, OutputCase, all_output_cases, outputs
+from tests.yaml_text import quoted
 
 CASES = all_output_cases()
 CASES_BY_NAME = {case.name: case for case in CASES}
@@ -96,3 +99,34 @@ def test_hover_text_of_generated_fields_includes_the_range() -> None:
         'Constraints: within [1.0, 120.0] in steps of 0.5."'
     ) in text
     assert "Default: 640. Constraints: within [64, 4096]." in text
+
+
+LINK_TEXTS = [
+    "javascript:alert(document.cookie)",
+    "JavaScript:alert(1)",
+    "(javascript:alert(1))",
+    "data:text/html,<script>alert(1)</script>",
+    "see <javascript:alert(1)> and [x](javascript:alert(1))",
+]
+
+
+def test_no_description_becomes_a_link(tmp_path: Path) -> None:
+    """docutils links ``scheme:rest`` on its own; neither page may hold a live link."""
+    lines = ["genparams: 1", "name: links", f"description: {quoted(LINK_TEXTS[0])}", "parameters:"]
+    for index, text in enumerate(LINK_TEXTS):
+        lines.append(f"  p{index}: {{type: string, default: a, description: {quoted(text)}}}")
+    schema = tmp_path / "links.yaml"
+    schema.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    rst, markdown = tmp_path / "links.rst", tmp_path / "links.md"
+    assert main(["docs", str(schema), "--format", "rst", "-o", str(rst)]) == 0
+    assert main(["docs", str(schema), "--format", "markdown", "-o", str(markdown)]) == 0
+    rst_html = docutils.core.publish_string(
+        rst.read_text(encoding="utf-8"),
+        writer="html",
+        settings_overrides={"report_level": 5, "halt_level": 5},
+    ).decode("utf-8")
+    md_html = MarkdownIt("gfm-like").render(markdown.read_text(encoding="utf-8"))
+    for html in (rst_html, md_html):
+        assert "<a " not in html.split("<body>")[-1]
+        text = re.sub(r"<[^>]+>", "", html)
+        assert "javascript:alert(document.cookie)" in text.replace("&amp;", "&")

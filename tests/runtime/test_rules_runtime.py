@@ -121,6 +121,23 @@ def test_atomic_set_fixes_two_parameters_together(
     ]
 
 
+def test_descriptors_state_the_rules_that_read_them(
+    ros: RosHarness, module: types.ModuleType
+) -> None:
+    """``ros2 param describe`` shows a parameter's rules after its own constraints."""
+    node = ros.node()
+    module.MotionParams.declare(node, prefix="base")
+    described = ros.client(node).describe("base.min_speed", "base.height", "base.weights")
+    by_name = {d.name: d.additional_constraints for d in described}
+    assert by_name == {
+        "base.min_speed": "rule speed_order: min_speed <= max_speed "
+        "(The minimum speed cannot exceed the maximum.)",
+        "base.height": "must be > 0; "
+        "rule aspect_matches: abs(aspect_ratio - width / height) <= 0.01",
+        "base.weights": "rule one_weight_per_topic: len(topics) == len(weights)",
+    }
+
+
 def test_rule_reasons_name_prefixed_parameters(ros: RosHarness, module: types.ModuleType) -> None:
     node = ros.node()
     cfg = module.MotionParams.declare(node, prefix="base")

@@ -80,8 +80,28 @@ NODE_ONLY_CHECKS = """def is_short(value):
 """
 
 
+# Integers past 2^53, doubles that hold whole numbers, and a rule: as the page must show them.
+VALUES_SCHEMA = """\
+genparams: 1
+name: values
+parameters:
+  big: {type: int, default: 9007199254740993}
+  ids: {type: int_array, default: [9007199254740993, -9223372036854775808]}
+  ratio: {type: double, default: 30.0}
+  weights: {type: double_array, default: [1.0, 2.5]}
+  ranged: {type: double, default: 2.0, range: {min: 0.0, max: 10.0}}
+  low: {type: double, default: 1.0}
+rules:
+  - name: low_below_ranged
+    check: low <= ranged
+    description: low stays at or below ranged.
+"""
+
+
 def schema_text(kind: str, workdir: Path) -> tuple[Path, str] | None:
     """The schema of a kind written in code, or None for an example's file."""
+    if kind == "values":
+        return workdir / "values.yaml", VALUES_SCHEMA
     if kind.startswith("wide"):
         return workdir / "wide.yaml", wide_schema(int(kind[4:] or 1000))
     if kind == "hostile":

@@ -118,7 +118,7 @@ def test_the_page_shows_and_takes_nan_and_infinities_by_name(server: TuneServer)
             threshold = page.locator('[data-param="threshold"]')
             expect(threshold).to_have_value("nan")
             expect(page.locator('[data-param="floor"]')).to_have_value("-inf")
-            expect(page.locator('[data-param="mode"]')).to_have_value("1")
+            expect(page.locator('[data-param="mode"]')).to_have_value("1.0")  # a double: 1.0
             threshold.fill("inf")
             threshold.dispatch_event("change")  # live: applied at once
             eventually(lambda: values(server)["threshold"] == math.inf)

@@ -63,8 +63,8 @@ def test_an_open_group_lists_the_entries_the_node_declared(page: Page) -> None:
     # Each entry's fields with their types and checks, values as the node holds them.
     expect(control(page, "sensors.front.rate")).to_have_attribute("type", "range")
     expect(control(page, "sensors.front.rate")).to_have_attribute("max", "200")
-    expect(page.locator('[data-param-box="sensors.front.rate"]')).to_have_value("50")
-    expect(page.locator('[data-param-box="sensors.rear.rate"]')).to_have_value("30")
+    expect(page.locator('[data-param-box="sensors.front.rate"]')).to_have_value("50.0")
+    expect(page.locator('[data-param-box="sensors.rear.rate"]')).to_have_value("30.0")
     expect(row(page, "sensors.rear.rate")).to_contain_text("within [1.0, 200.0]")
     expect(control(page, "sensors.rear.enabled")).to_have_attribute("type", "checkbox")
     expect(control(page, "sensors.rear.topic")).to_have_value("/rear/scan")
@@ -81,8 +81,8 @@ def test_a_map_inside_an_open_group_is_listed_per_key(page: Page) -> None:
     inner = page.locator('[data-map="controllers.arm.gains"]')
     expect(inner).to_contain_text("one entry per item of joints")
     expect(inner.locator("[data-entry]")).to_have_count(2)
-    expect(control(page, "controllers.arm.gains.left.p")).to_have_value("2")
-    expect(control(page, "controllers.arm.gains.right.p")).to_have_value("1")
+    expect(control(page, "controllers.arm.gains.left.p")).to_have_value("2.0")
+    expect(control(page, "controllers.arm.gains.right.p")).to_have_value("1.0")
     expect(page.locator('[data-row*="*"]')).to_have_count(0)  # no template is shown
 
 

@@ -142,7 +142,9 @@ def _convert_scalar(kind: str, value: Any, lenient_double: bool) -> Any:
     elif kind == "int":
         if isinstance(value, int) and not isinstance(value, bool):
             if not INT64_MIN <= value <= INT64_MAX:
-                raise ValueTypeError(f"integer {value} does not fit in int64")
+                shown = str(value)
+                shown = shown if len(shown) <= 60 else shown[:57] + "..."
+                raise ValueTypeError(f"integer {shown} does not fit in int64")
             return value
     elif kind == "double":
         if isinstance(value, float):

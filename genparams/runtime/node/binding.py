@@ -127,7 +127,13 @@ class Binding(Generic[P]):
         by_full_name = {full(name): value for name, value in values.items()}
         declare_batch(
             node,
-            [(ros_parameter(p, n, by_full_name[n]), descriptor_for(p, n)) for n, p in owned.items()]
+            [
+                (
+                    ros_parameter(p, full(name), by_full_name[full(name)]),
+                    descriptor_for(p, full(name), compiled.rules_by_parameter.get(name, ())),
+                )
+                for name, p in parameters.items()
+            ]
             + aliases.declarations(owned, by_full_name),
         )
         given = [name for name in reader.given if name in parameters]  # conditions that hold

@@ -14,16 +14,23 @@ from rcl_interfaces.msg import (
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
+from genparams.runtime.core.rules import CompiledRule
 from genparams.runtime.core.spec import CompiledParam
 from genparams.runtime.node import rclpy_internals as internals
 
 
-def descriptor_for(param: CompiledParam, full_name: str) -> ParameterDescriptor:
+def descriptor_for(
+    param: CompiledParam, full_name: str, rules: Sequence[CompiledRule] = ()
+) -> ParameterDescriptor:
+    """The parameter's descriptor; ``rules`` (those that read it) are stated after its own
+    constraints, so ``ros2 param describe`` shows them."""
+    constraints = [param.constraints_text] if param.constraints_text else []
+    constraints += [rule_text(rule) for rule in rules]
     descriptor = ParameterDescriptor(
         name=full_name,
         type=param.type.ros_type,
         description=param.descriptor_description,
-        additional_constraints=param.constraints_text,
+        additional_constraints="; ".join(constraints),
         read_only=param.spec.read_only,
         dynamic_typing=param.type.is_dynamic,
     )
@@ -46,6 +53,12 @@ def descriptor_for(param: CompiledParam, full_name: str) -> ParameterDescriptor:
                 )
             ]
     return descriptor
+
+
+def rule_text(rule: CompiledRule) -> str:
+    """A rule as a descriptor states it: ``rule speed_order: min_speed <= max_speed (why)``."""
+    check = " ".join(rule.check.split())  # one line, however the schema wrapped it
+    return f"rule {rule.name}: {check}" + (f" ({rule.description})" if rule.description else "")
 
 
 def ros_parameter(param: CompiledParam, full_name: str, value: Any) -> Parameter:

@@ -26,8 +26,14 @@ const entryName = (place, key, field) => [place.path, key, field].filter(Boolean
 function metas(schema, parameters, places) {
   const byName = new Map();
   const groups = new Map();
+  const rules = new Map();  // parameter name -> the rules that read it
   for (const described of schema?.classes || []) {
-    for (const p of described.parameters) byName.set(p.name, { ...p, schema: true });
+    for (const rule of described.rules || [])
+      for (const name of rule.parameters) rules.set(name, [...(rules.get(name) || []), rule]);
+  }
+  for (const described of schema?.classes || []) {
+    for (const p of described.parameters)
+      byName.set(p.name, { ...p, schema: true, rules: rules.get(p.name) || [] });
     for (const group of described.maps) groups.set(group.path, group);
   }
   const values = new Map(parameters.map((p) => [p.name, p.value]));
@@ -74,7 +80,7 @@ function renderDiff() {
   for (const [name, meta] of byName) {
     if (!meta.schema || meta.required || meta.optional || !values.has(name)) continue;
     if (stringifyJson(meta.default) !== stringifyJson(values.get(name)))  // NaN equals NaN, inf is not -inf
-      rows.push([name, meta.default, values.get(name)]);
+      rows.push([name, meta.default, values.get(name), meta.type]);
   }
   page.view.diff.replaceChildren(diffTable(rows));
 }
@@ -360,7 +366,8 @@ function onEvent(event) {
     page.view.known.values.set(name, value);
     page.applying?.changed.add(name);
     if (!page.pending.has(name)) { setControl(name, value); showError(name, ""); }
-    else showNote(name, "data-param-node", `the node now holds ${shownJson(value)}`);
+    else showNote(name, "data-param-node",
+      `the node now holds ${shownJson(value, page.view.known.byName.get(name)?.type)}`);
   }
   renderDiff();
 }

@@ -1,7 +1,7 @@
 // A node's form: one section per namespace, one row per parameter, a fieldset per mapped group.
 // The page only types what the user enters as JSON; every rule is checked by the server
 // (the node's own checks, /api/check) and by the node.
-import { floatName, namedFloat, shownJson } from "./json.js";
+import { namedFloat, numberText, shownJson } from "./json.js";
 
 export function isArrayType(type) {
   return type.endsWith("_array");
@@ -41,20 +41,15 @@ function numberOf(kind, text) {
   if (!Number.isFinite(value)) {
     return new InputError(`${JSON.stringify(trimmed)} is not a number (nan, inf and -inf are)`);
   }
-  // An integer past 2^53 keeps its digits: JSON.rawJSON writes them as typed.
-  if (/^-?\d+$/.test(trimmed) && !Number.isSafeInteger(value) && JSON.rawJSON) return JSON.rawJSON(trimmed);
+  // An integer past 2^53 keeps its digits: a BigInt, written as typed (json.js).
+  if (/^-?\d+$/.test(trimmed) && !Number.isSafeInteger(value) && JSON.rawJSON) return BigInt(trimmed);
   return value;
-}
-
-// A number as its box shows it: nan, inf and -inf by name.
-function numberText(value) {
-  return floatName(value) ?? String(value ?? "");
 }
 
 // A double's box is text, so that it can hold nan, inf and -inf; an int's is a number box.
 function numberInput(kind, value, step, attrs) {
-  if (kind === "double") return el("input", { type: "text", inputMode: "decimal", value: numberText(value), ...attrs });
-  return el("input", { type: "number", step, value: numberText(value), ...attrs });
+  if (kind === "double") return el("input", { type: "text", inputMode: "decimal", value: numberText(value, kind), ...attrs });
+  return el("input", { type: "number", step, value: numberText(value, kind), ...attrs });
 }
 
 function scalarInput(kind, value, attrs) {
@@ -100,7 +95,7 @@ function control(meta, name, value, disabled, onEdit, onDraft) {
   if (isArrayType(kind)) return arrayEditor(meta, name, value, disabled, onEdit);
   const id = `p-${name}`;
   if (meta.choices) {
-    const shown = (c) => (kind === "string" ? String(c) : numberText(c));
+    const shown = (c) => (kind === "string" ? String(c) : numberText(c, kind));
     const select = el("select", { id, "data-param": name, disabled },
       ...meta.choices.map((c) => el("option", { value: shown(c), text: shown(c) })));
     select.value = shown(value);
@@ -122,7 +117,7 @@ function control(meta, name, value, disabled, onEdit, onDraft) {
     });
     number.addEventListener("input", () => onDraft(name, numberOf(kind, number.value)));
     const pair = el("span", { class: "slider" }, slider, number);
-    slider.genparamsSet = (next) => { slider.value = next; number.value = numberText(next); };
+    slider.genparamsSet = (next) => { slider.value = next; number.value = numberText(next, kind); };
     pair.genparamsControl = slider;
     return pair;
   }
@@ -130,7 +125,7 @@ function control(meta, name, value, disabled, onEdit, onDraft) {
   input.addEventListener("change", () => onEdit(name, scalarValue(kind, input)));
   if (kind !== "bool") input.addEventListener("input", () => onDraft(name, scalarValue(kind, input)));
   input.genparamsSet = (next) => {
-    if (kind === "bool") input.checked = Boolean(next); else input.value = kind === "string" ? next : numberText(next);
+    if (kind === "bool") input.checked = Boolean(next); else input.value = kind === "string" ? next : numberText(next, kind);
   };
   return input;
 }
@@ -139,6 +134,13 @@ function help(meta) {
   const words = [meta.description, ...(meta.constraints || [])].filter(Boolean);
   if (meta.deprecated) words.push(`deprecated: ${meta.deprecated}`);
   return words.join(" · ");
+}
+
+// The cross-parameter rules that read this parameter, one line each.
+function rulesOf(meta) {
+  return el("ul", { class: "rules", "data-param-rules": meta.name },
+    ...(meta.rules || []).map((rule) => el("li", { "data-rule": rule.name,
+      text: `rule ${rule.name}: ${rule.check}${rule.description ? ` (${rule.description})` : ""}` })));
 }
 
 export function row(meta, name, label, value, { readOnly, onEdit, onDraft, onReset, hasDefault }) {
@@ -158,6 +160,7 @@ export function row(meta, name, label, value, { readOnly, onEdit, onDraft, onRes
     el("div", { class: "error", "data-param-error": name, role: "alert" }),
     el("div", { class: "note", "data-param-note": name }),
     el("div", { class: "note", "data-param-node": name }),
+    meta.rules?.length ? rulesOf({ ...meta, name }) : null,
     el("div", { class: "help", text: help(meta) }));
 }
 
@@ -200,8 +203,8 @@ export function diffTable(rows) {
   if (!rows.length) return el("p", { class: "hint", "data-diff-empty": true, text: "All values are at their defaults." });
   return el("table", { class: "diff" },
     el("thead", {}, el("tr", {}, ...["parameter", "default", "current"].map((t) => el("th", { text: t })))),
-    el("tbody", {}, ...rows.map(([name, def, cur]) => el("tr", { "data-diff": name },
-      el("td", { text: name }), el("td", { text: shownJson(def) }), el("td", { text: shownJson(cur) })))));
+    el("tbody", {}, ...rows.map(([name, def, cur, type]) => el("tr", { "data-diff": name },
+      el("td", { text: name }), el("td", { text: shownJson(def, type) }), el("td", { text: shownJson(cur, type) })))));
 }
 
 export { el };

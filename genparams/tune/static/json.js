@@ -20,21 +20,42 @@ export function namedFloat(text) {
   return Object.hasOwn(FLOATS, name) ? FLOATS[name] : undefined;
 }
 
+// An int64 past 2^53 is read from its own digits as a BigInt: a double would round it.
+// (A double is written with a point or an exponent, so digits alone are an integer.)
+const INTEGER = /^-?\d+$/;
+function exactNumber(value, context) {
+  if (typeof value !== "number" || Number.isSafeInteger(value)) return value;
+  const source = context?.source;  // JSON.parse source text access
+  return typeof source === "string" && INTEGER.test(source) && JSON.rawJSON ? BigInt(source) : value;
+}
+
 export function parseJson(text) {
-  return JSON.parse(text, (key, value) => (isFloatTag(value) ? FLOATS[value.$float] : value));
+  return JSON.parse(text, (key, value, context) =>
+    (isFloatTag(value) ? FLOATS[value.$float] : exactNumber(value, context)));
 }
 
 export function stringifyJson(value) {
   return JSON.stringify(value, (key, item) => {
+    // A browser without JSON.rawJSON never makes a BigInt here (see exactNumber, numberOf).
+    if (typeof item === "bigint") return JSON.rawJSON ? JSON.rawJSON(String(item)) : Number(item);
     const name = floatName(item);
     return name === undefined ? item : { $float: name };
   });
 }
 
-// A value as the page shows it: JSON, with nan, inf and -inf as such (never null).
-export function shownJson(value) {
+// A number as the page shows it: nan, inf and -inf by name, a double with its point (30.0,
+// as ROS tells 30.0 from 30), an integer with all its digits.
+export function numberText(value, type = "") {
   const name = floatName(value);
   if (name !== undefined) return name;
-  if (Array.isArray(value)) return `[${value.map(shownJson).join(", ")}]`;
+  if (type.startsWith("double") && Number.isInteger(value) && Math.abs(value) < 1e21)
+    return value.toFixed(1);
+  return String(value ?? "");
+}
+
+// A value as the page shows it: JSON, with numbers as numberText shows them (never null).
+export function shownJson(value, type = "") {
+  if (typeof value === "number" || typeof value === "bigint") return numberText(value, type);
+  if (Array.isArray(value)) return `[${value.map((item) => shownJson(item, type)).join(", ")}]`;
   return JSON.stringify(value);
 }
