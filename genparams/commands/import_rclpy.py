@@ -59,7 +59,7 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 
 def run(args: argparse.Namespace) -> int:
     file = str(args.source)
-    text = read_source(args.source, "node file")
+    text = read_source(args.source, "rclpy source")
     try:
         _, unit = scanned(text, file, args.class_name)
         overrides, given_by = _overrides(args.params_files, node_name(unit))
