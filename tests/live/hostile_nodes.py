@@ -12,6 +12,8 @@ them. Kinds:
 - ``forger:TARGET``: publishes ``ParameterEvent(node=TARGET, gain=9.5)`` five times a second.
 - ``slow:SECONDS:FILE``: declares ``counter`` (an int); its on-set callback takes SECONDS and
   writes how many times it ran to FILE.
+- ``gated:DIR``: declares ``counter`` (an int); its on-set callback waits until the file
+  DIR/release exists, and writes how many times it ran to DIR/count.
 - ``plain``: a plain node with ``gain`` (a double): for names of one's choosing (hidden ones).
 - ``dotted``: a plain node declaring ``a``, ``a.b`` and ``a.b.c``.
 """
@@ -115,6 +117,23 @@ def slow(name: str, seconds: float, count_file: Path) -> Node:
     return node
 
 
+def gated(name: str, workdir: Path) -> Node:
+    """A node whose on-set callback takes as long as the test wants: until DIR/release."""
+    node = Node(name)
+    node.declare_parameter("counter", 0)
+    calls = [0]
+
+    def on_set(parameters: list[Any]) -> SetParametersResult:
+        calls[0] += 1
+        (workdir / "count").write_text(str(calls[0]), encoding="utf-8")
+        while not (workdir / "release").exists() and node.context.ok():  # a stop ends it
+            time.sleep(0.05)
+        return SetParametersResult(successful=True)
+
+    node.add_on_set_parameters_callback(on_set)
+    return node
+
+
 def plain(name: str) -> Node:
     node = Node(name)
     node.declare_parameter("gain", 1.5)
@@ -148,6 +167,8 @@ def make(spec: str) -> Node:
     if kind == "slow":
         seconds, _, path = arg.partition(":")
         return slow(name, float(seconds), Path(path))
+    if kind == "gated":
+        return gated(name, Path(arg))
     if kind == "plain":
         return plain(name)
     if kind == "dotted":

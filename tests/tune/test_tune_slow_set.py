@@ -1,0 +1,69 @@
+"""A set the node is still working on shows as such in the page, then as what the node did.
+
+The node's on-set callback waits until the test lets it go, so the server's wait for the
+answer (SET_WAIT_SECONDS) ends first, whatever the machine's load: the server answers 202,
+and the page keeps the edit as sent but not confirmed. Once the node answers, the outcome
+and the node's value come by the event stream.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+from playwright.sync_api import Page, expect
+
+from genparams.tune.server import TuneServer
+from tests.live.support import hostile_nodes
+from tests.support import RosHarness
+from tests.tune.support import open_node, service_client, unique
+
+GATED = f"/{unique('page_gated')}"
+
+
+@pytest.fixture(scope="module")
+def gate(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Path]:
+    workdir = tmp_path_factory.mktemp("gated")
+    with hostile_nodes(f"{GATED[1:]}:gated:{workdir}"):
+        yield workdir
+
+
+@pytest.fixture(scope="module")
+def server(gate: Path) -> Iterator[TuneServer]:
+    tune = TuneServer(nodes=(GATED,))
+    tune.start()
+    try:
+        yield tune
+    finally:
+        tune.stop()
+
+
+def test_a_slow_set_shows_as_still_working_then_as_applied(
+    page: Page, server: TuneServer, gate: Path, ros_harness: RosHarness
+) -> None:
+    open_node(page, server, GATED)
+    page.locator("#live").uncheck()
+    box = page.locator(f'form[data-node="{GATED}"] input[data-param="counter"]')
+    box.fill("7")
+    box.dispatch_event("change")
+    apply = page.locator("[data-apply]")
+    expect(apply).to_contain_text("Apply 1 change(s)")
+    with page.expect_response("**/api/set") as answered:
+        apply.click()
+    assert answered.value.status == 202
+    row = page.locator('[data-row="counter"]')
+    note = page.locator('[data-param-note="counter"]')
+    expect(page.locator("#status")).to_contain_text("still working on the set")
+    expect(row).to_have_attribute("data-verdict", "working")
+    expect(note).to_have_text("sent, not yet confirmed by the node")
+    expect(apply).to_be_disabled()  # sent once: not offered again
+    assert (gate / "count").read_text(encoding="utf-8") == "1"
+
+    (gate / "release").touch()
+    expect(page.locator("#status")).to_contain_text(f"{GATED} applied 1 change(s)")
+    expect(row).to_have_attribute("data-verdict", "ok")
+    expect(note).to_have_text("")
+    expect(box).to_have_value("7")
+    assert service_client(ros_harness, GATED).get("counter") == [7]
+    assert (gate / "count").read_text(encoding="utf-8") == "1"
