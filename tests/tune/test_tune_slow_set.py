@@ -12,7 +12,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-from playwright.sync_api import Page, expect
+from playwright.sync_api import Locator, Page, expect
 
 from genparams.tune.server import TuneServer
 from tests.live.support import hostile_nodes
@@ -39,31 +39,65 @@ def server(gate: Path) -> Iterator[TuneServer]:
         tune.stop()
 
 
-def test_a_slow_set_shows_as_still_working_then_as_applied(
-    page: Page, server: TuneServer, gate: Path, ros_harness: RosHarness
-) -> None:
+def slow_apply(page: Page, server: TuneServer, value: int) -> None:
+    """Apply ``counter = value`` from the page; return once the node has it, unanswered."""
     open_node(page, server, GATED)
     page.locator("#live").uncheck()
-    box = page.locator(f'form[data-node="{GATED}"] input[data-param="counter"]')
-    box.fill("7")
+    box = counter_box(page)
+    box.fill(str(value))
     box.dispatch_event("change")
     apply = page.locator("[data-apply]")
     expect(apply).to_contain_text("Apply 1 change(s)")
     with page.expect_response("**/api/set") as answered:
         apply.click()
     assert answered.value.status == 202
-    row = page.locator('[data-row="counter"]')
-    note = page.locator('[data-param-note="counter"]')
     expect(page.locator("#status")).to_contain_text("still working on the set")
-    expect(row).to_have_attribute("data-verdict", "working")
-    expect(note).to_have_text("sent, not yet confirmed by the node")
+    expect(row(page)).to_have_attribute("data-verdict", "working")
+    expect(note(page)).to_have_text("sent, not yet confirmed by the node")
     expect(apply).to_be_disabled()  # sent once: not offered again
-    assert (gate / "count").read_text(encoding="utf-8") == "1"
 
-    (gate / "release").touch()
+
+def counter_box(page: Page) -> Locator:
+    return page.locator(f'form[data-node="{GATED}"] input[data-param="counter"]')
+
+
+def row(page: Page) -> Locator:
+    return page.locator('[data-row="counter"]')
+
+
+def note(page: Page) -> Locator:
+    return page.locator('[data-param-note="counter"]')
+
+
+def calls(gate: Path) -> int:
+    return int((gate / "count").read_text(encoding="utf-8"))
+
+
+def test_a_slow_set_shows_as_still_working_then_as_applied(
+    page: Page, server: TuneServer, gate: Path, ros_harness: RosHarness
+) -> None:
+    before = calls(gate) if (gate / "count").exists() else 0
+    slow_apply(page, server, 7)
+    assert calls(gate) == before + 1
+
+    (gate / "release_7").touch()
     expect(page.locator("#status")).to_contain_text(f"{GATED} applied 1 change(s)")
-    expect(row).to_have_attribute("data-verdict", "ok")
-    expect(note).to_have_text("")
-    expect(box).to_have_value("7")
+    expect(row(page)).to_have_attribute("data-verdict", "ok")
+    expect(note(page)).to_have_text("")
+    expect(counter_box(page)).to_have_value("7")
     assert service_client(ros_harness, GATED).get("counter") == [7]
-    assert (gate / "count").read_text(encoding="utf-8") == "1"
+    assert calls(gate) == before + 1  # sent once
+
+
+def test_a_slow_set_the_node_refuses_shows_its_reason_and_stays_to_apply(
+    page: Page, server: TuneServer, gate: Path, ros_harness: RosHarness
+) -> None:
+    held = service_client(ros_harness, GATED).get("counter")
+    slow_apply(page, server, 13)
+
+    (gate / "release_13").touch()
+    expect(page.locator("#status")).to_contain_text("the node rejected the change")
+    expect(row(page)).to_have_attribute("data-verdict", "refused")
+    expect(page.locator('[data-param-error="counter"]')).to_have_text("13 is unlucky")
+    expect(page.locator("[data-apply]")).to_contain_text("Apply 1 change(s)")
+    assert service_client(ros_harness, GATED).get("counter") == held

@@ -132,6 +132,8 @@ async function applyEdits(edits, atomic) {
     showVerdicts(check);
     if (!check.successful) { status("the node would refuse this change: not sent"); return false; }
   }
+  clearTimeout(page.checkTimer);
+  page.checks++;  // a check still in flight answers for values before this set: not shown
   const answer = await api.set(node, params, atomic);
   if (node !== page.node) return false;
   if (answer.pending) { awaitOutcome(node, answer, edits); return "sent"; }
