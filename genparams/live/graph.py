@@ -24,12 +24,14 @@ from rclpy.context import Context
 from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor, ShutdownException
 from rclpy.node import Node
 from rclpy.parameter import Parameter
+from rclpy.task import Future
 
 from genparams.live.answers import NodeAnswerError, ReadParameter
 from genparams.live.parameter_events import EventListener, EventRelay
 from genparams.live.schema_topics import SchemaTopics
 from genparams.live.services import (
     ParameterReader,
+    StillWorkingError,
     answers,
     read_all,
     read_named,
@@ -283,27 +285,28 @@ class Graph:
         self, node_name: str, parameters: list[Parameter], atomic: bool, timeout: float = 5.0
     ) -> list[dict[str, Any]]:
         """Set through the node's services, sent once; one result per parameter (atomic: the
-        same one). StillWorkingError when the node has not answered within ``timeout``."""
+        same one). StillWorkingError when the node has not answered within ``timeout``: its
+        answer, when it comes, goes to the listeners as a ``set`` event (:func:`set_event`)."""
         setter = self.setter(node_name)
         client = setter.atomic if atomic else setter.single
         if not wait_ready([setter.single, setter.atomic], timeout):
             raise TimeoutError(f"{node_name}: parameter services did not appear")
         setter.prime(timeout)
         messages = [p.to_parameter_msg() for p in parameters]
-        if atomic:
-            request: Any = SetParametersAtomically.Request(parameters=messages)
+        request: Any = (SetParametersAtomically if atomic else SetParameters).Request(
+            parameters=messages
+        )
+        try:
             answer = send_once(node_name, lambda: client.call_async(request), timeout)
-            results = [answer.result] * len(parameters)
-        else:
-            request = SetParameters.Request(parameters=messages)
-            results = send_once(node_name, lambda: client.call_async(request), timeout).results
-        if len(results) != len(parameters):
-            count = f"{len(results)} results for {len(parameters)} values"
-            raise NodeAnswerError(f"{node_name}: its set answer cannot be used: {count}")
-        return [
-            {"name": p.name, "successful": bool(r.successful), "reason": str(r.reason)}
-            for p, r in zip(parameters, results, strict=True)
-        ]
+        except StillWorkingError as working:
+            set_id = working.set_id  # the name `working` is gone once the block ends
+
+            def answered(done: Future) -> None:
+                self.dispatch(set_event(node_name, set_id, parameters, atomic, done))
+
+            working.future.add_done_callback(answered)
+            raise
+        return set_results(node_name, parameters, answer, atomic)
 
     # /parameter_events ---------------------------------------------------------
 
@@ -312,3 +315,30 @@ class Graph:
 
     def dispatch(self, event: dict[str, Any]) -> None:
         self.events.dispatch(event)
+
+
+def set_results(
+    node_name: str, parameters: Sequence[Parameter], answer: Any, atomic: bool
+) -> list[dict[str, Any]]:
+    """One result per parameter of a set's answer; NodeAnswerError when it cannot be used."""
+    results = [answer.result] * len(parameters) if atomic else list(answer.results)
+    if len(results) != len(parameters):
+        count = f"{len(results)} results for {len(parameters)} values"
+        raise NodeAnswerError(f"{node_name}: its set answer cannot be used: {count}")
+    return [
+        {"name": p.name, "successful": bool(r.successful), "reason": str(r.reason)}
+        for p, r in zip(parameters, results, strict=True)
+    ]
+
+
+def set_event(
+    node_name: str, set_id: int, parameters: Sequence[Parameter], atomic: bool, done: Future
+) -> dict[str, Any]:
+    """The outcome of a set answered after the wait: its results, or why there are none."""
+    event: dict[str, Any] = {"kind": "set", "node": node_name, "set": set_id}
+    try:
+        event["results"] = set_results(node_name, parameters, done.result(), atomic)
+    except Exception as exc:  # a cancelled call or an unusable answer: told, not raised
+        event["results"] = []
+        event["error"] = str(exc) or type(exc).__name__
+    return event

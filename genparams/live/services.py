@@ -9,6 +9,7 @@ the set services are opened when a set is made. Every answer is checked by
 
 from __future__ import annotations
 
+import itertools
 import threading
 import time
 from collections.abc import Callable, Sequence
@@ -28,10 +29,15 @@ from genparams.live.answers import (
 )
 
 RESEND_SECONDS = 1.0
+SET_IDS = itertools.count(1)
 
 
 class StillWorkingError(TimeoutError):
-    """A set the node has not answered yet: sent once, never again; ``future`` ends later."""
+    """A set the node has not answered yet: sent once, never again; ``future`` ends later.
+
+    ``set_id`` names the set in the event that tells its outcome (see
+    :meth:`genparams.live.graph.Graph.set_parameters`).
+    """
 
     def __init__(self, node: str, future: Future) -> None:
         super().__init__(
@@ -39,6 +45,7 @@ class StillWorkingError(TimeoutError):
             " its change shows when the node makes it"
         )
         self.future = future
+        self.set_id = next(SET_IDS)
 
 
 def wait_future(future: Future, timeout: float, *, cancel: bool = True) -> Any:

@@ -152,8 +152,9 @@ class TuneApp:
                 wanted.atomic,
                 SET_WAIT_SECONDS,
             )
-        except StillWorkingError as exc:  # sent once; its change shows by the node's events
-            return JSONResponse({"pending": True, "detail": str(exc), "results": []}, 202)
+        except StillWorkingError as exc:  # sent once; its outcome comes as a "set" event
+            body = {"pending": True, "detail": str(exc), "set": exc.set_id, "results": []}
+            return JSONResponse(body, 202)
         except TimeoutError as exc:
             return JSONResponse({"error": str(exc)}, status_code=504)
         return JSONResponse({"results": results})

@@ -12,6 +12,9 @@ them. Kinds:
 - ``forger:TARGET``: publishes ``ParameterEvent(node=TARGET, gain=9.5)`` five times a second.
 - ``slow:SECONDS:FILE``: declares ``counter`` (an int); its on-set callback takes SECONDS and
   writes how many times it ran to FILE.
+- ``gated:DIR``: declares ``counter`` (an int); its on-set callback for the value V waits
+  until the file DIR/release_V exists, writes how many times it ran to DIR/count, and
+  refuses 13 (``13 is unlucky``).
 - ``plain``: a plain node with ``gain`` (a double): for names of one's choosing (hidden ones).
 - ``dotted``: a plain node declaring ``a``, ``a.b`` and ``a.b.c``.
 """
@@ -115,6 +118,27 @@ def slow(name: str, seconds: float, count_file: Path) -> Node:
     return node
 
 
+def gated(name: str, workdir: Path) -> Node:
+    """A node whose on-set callback takes as long as the test wants: until DIR/release_V."""
+    node = Node(name)
+    node.declare_parameter("counter", 0)
+    calls = [0]
+
+    def on_set(parameters: list[Any]) -> SetParametersResult:
+        calls[0] += 1
+        (workdir / "count").write_text(str(calls[0]), encoding="utf-8")
+        values = [p.value for p in parameters]
+        gates = [workdir / f"release_{value}" for value in values]
+        while not all(gate.exists() for gate in gates) and node.context.ok():  # a stop ends it
+            time.sleep(0.05)
+        if 13 in values:
+            return SetParametersResult(successful=False, reason="13 is unlucky")
+        return SetParametersResult(successful=True)
+
+    node.add_on_set_parameters_callback(on_set)
+    return node
+
+
 def plain(name: str) -> Node:
     node = Node(name)
     node.declare_parameter("gain", 1.5)
@@ -148,6 +172,8 @@ def make(spec: str) -> Node:
     if kind == "slow":
         seconds, _, path = arg.partition(":")
         return slow(name, float(seconds), Path(path))
+    if kind == "gated":
+        return gated(name, Path(arg))
     if kind == "plain":
         return plain(name)
     if kind == "dotted":

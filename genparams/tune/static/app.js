@@ -8,10 +8,11 @@ import { parseJson, shownJson, stringifyJson } from "./json.js";
 // applying: the edits of the apply in flight and the names the node changed meanwhile.
 // loading: the node whose read for a new form is in flight; missed: one of its events came
 // meanwhile; reads: reads started (only the newest counts); fresher: the names events set
-// during a catch-up read.
+// during a catch-up read. unconfirmed: sets the node is still working on (the server's 202),
+// by the id its "set" event will carry, each with the node and the edits it sent.
 const page = { readOnly: false, node: null, view: null, pending: new Map(), drafts: new Map(),
   applying: null, reload: null, checkTimer: null, checks: 0, loading: null, missed: false,
-  reads: 0, fresher: null };
+  reads: 0, fresher: null, unconfirmed: new Map() };
 const CHECK_DELAY_MS = 150;
 
 function status(text) { document.getElementById("status").textContent = text; }
@@ -131,16 +132,54 @@ async function applyEdits(edits, atomic) {
     showVerdicts(check);
     if (!check.successful) { status("the node would refuse this change: not sent"); return false; }
   }
-  const { results } = await api.set(node, params, atomic);
+  clearTimeout(page.checkTimer);
+  page.checks++;  // a check still in flight answers for values before this set: not shown
+  const answer = await api.set(node, params, atomic);
   if (node !== page.node) return false;
+  if (answer.pending) { awaitOutcome(node, answer, edits); return "sent"; }
+  return showResults(answer.results, `applied ${params.length} change(s)`);
+}
+
+// A set's results, row by row; true when the node took every value.
+function showResults(results, applied) {
   let ok = true;
   for (const result of results) {
     showError(result.name, result.successful ? "" : result.reason || "rejected by the node");
+    showNote(result.name, "data-param-note", "");
     markRow(result.name, result.successful ? "ok" : "refused");
     ok &&= result.successful;
   }
-  status(ok ? `applied ${params.length} change(s)` : "the node rejected the change");
+  status(ok ? applied : "the node rejected the change");
   return ok;
+}
+
+// The node has not answered the set yet (it was sent once and is not sent again): its rows
+// say so until its "set" event tells the outcome, or a new read of the node replaces them.
+function awaitOutcome(node, answer, edits) {
+  page.unconfirmed.set(answer.set, { node, edits: new Map(edits) });
+  for (const [name] of edits) {
+    markRow(name, "working");
+    showNote(name, "data-param-note", "sent, not yet confirmed by the node");
+  }
+  status(answer.detail);
+}
+
+// The outcome of a set the node was still working on. A value it refused goes back to the
+// edits not applied, unless it was edited again meanwhile.
+function onSetOutcome(event) {
+  const sent = page.unconfirmed.get(event.set);
+  if (!sent || sent.node !== event.node) return;
+  page.unconfirmed.delete(event.set);
+  if (!page.view || event.node !== page.node) return;
+  if (event.error) {
+    for (const [name] of sent.edits) { markRow(name, "refused"); showNote(name, "data-param-note", ""); }
+    status(`${event.node}: ${event.error}`);
+    return;
+  }
+  const ok = showResults(event.results, `${event.node} applied ${sent.edits.size} change(s)`);
+  if (ok) return;
+  for (const [name, value] of sent.edits) if (!page.pending.has(name)) page.pending.set(name, value);
+  updateApplyButton();
 }
 
 // Check the edits not applied yet, with what is being typed, a moment after the last key.
@@ -201,7 +240,7 @@ async function applyPending() {
   } finally {
     if (page.applying === applying) page.applying = null;
   }
-  if (!ok || !page.view) return;
+  if (!ok || !page.view) return;  // ok: true, or "sent" (the node is still working on it)
   for (const [name, value] of sent) {
     if (stringifyJson(page.pending.get(name)) !== stringifyJson(value)) continue;  // edited again
     page.pending.delete(name);
@@ -223,6 +262,7 @@ function setKeys(group, keys) {
 
 function renderNode(data) {
   page.pending.clear();
+  page.unconfirmed.clear();  // the values are the node's, as just read
   const known = metas(data.schema, data.parameters, data.places);
   page.drafts.clear();
   const handlers = { readOnly: page.readOnly, onEdit, onDraft, onReset };
@@ -354,6 +394,7 @@ async function catchUp(name) {
 }
 
 function onEvent(event) {
+  if (event.kind === "set") { onSetOutcome(event); return; }
   if (event.node === page.loading) { page.missed = true; return; }  // read again once shown
   if (!page.view || event.node !== page.node) return;
   if (event.kind === "schema" || Object.keys(event.new || {}).length || (event.deleted || []).length) {
