@@ -8,6 +8,7 @@ from pathlib import Path
 from typing import Any
 
 from rclpy.node import Node
+from rclpy.qos import QoSProfile, ReliabilityPolicy
 from std_msgs.msg import String
 
 from genparams import __version__
@@ -112,3 +113,24 @@ def test_a_destroyed_node_is_not_kept_alive(ros: RosHarness, tmp_path: Path) -> 
     ros.destroy_test_nodes()
     gc.collect()
     assert alive() is None
+
+
+def test_the_message_is_sent_when_a_subscriber_first_asks(ros: RosHarness, tmp_path: Path) -> None:
+    """Nothing is published at declare: a volatile subscriber (which a message published
+    before it matched would never reach) still gets the first message, sent on its match."""
+    module = load_generated(ROOT / "examples/arm/arm.yaml", tmp_path)
+    node = ros.node()
+    module.ArmParams.declare(node)
+    topic = node.get_fully_qualified_name() + SCHEMA_TOPIC_SUFFIX
+    assert topic in dict(node.get_topic_names_and_types())  # discoverable at once
+    received: list[String] = []
+    volatile = QoSProfile(depth=1, reliability=ReliabilityPolicy.RELIABLE)
+    subscription = ros.client_node.create_subscription(String, topic, received.append, volatile)
+    try:
+        deadline = time.monotonic() + 30.0
+        while not received and time.monotonic() < deadline:
+            ros.executor.spin_once(timeout_sec=0.05)
+    finally:
+        ros.client_node.destroy_subscription(subscription)
+    (message,) = received
+    assert [c["class"] for c in json.loads(message.data)["classes"]] == ["arm"]

@@ -133,6 +133,11 @@ class CompiledParam:
     type: ParamType
     attribute_path: tuple[str, ...]
     checks: tuple[Validator, ...]
+    # The descriptor's texts, made once (and shared between parameters that read the same):
+    # ``additional_constraints`` (``constraints`` less a scalar range, which travels in the
+    # descriptor's own range fields) and the description with its unit.
+    constraints_text: str = ""
+    descriptor_description: str = ""
 
     @property
     def name(self) -> str:
@@ -183,24 +188,50 @@ class CompiledParam:
             parts.append(CONFIGURE_ONLY_TEXT)
         return tuple(parts)
 
-    @property
-    def constraints_text(self) -> str:
-        """The descriptor's additional_constraints: ``constraints`` less a scalar range,
-        which travels in the descriptor's own range fields."""
-        if self.ros_range is None:
-            return "; ".join(self.constraints)
-        return "; ".join(self.constraints[1:])
-
-    @property
-    def descriptor_description(self) -> str:
-        text = self.spec.description
-        if self.spec.unit:
-            text = f"{text} [{self.spec.unit}]" if text else f"[{self.spec.unit}]"
-        return text
-
 
 def compile_param(spec: ParamSpec, extra_checks: tuple[Validator, ...] = ()) -> CompiledParam:
     param_type = TYPES[spec.type]
+    shared = None
+    if not extra_checks:
+        # Parameters that read the same range, choices and validators share their validator
+        # objects and texts (repr tells 1 from 1.0 and True, which == does not).
+        key = (
+            spec.type,
+            repr((spec.range, spec.choices, spec.validators)),
+            spec.additional_constraints,
+            spec.configure_only,
+        )
+        shared = _SHARED_CHECKS.get(key)
+    if shared is None:
+        checks = _build_checks(spec, param_type, extra_checks)
+        shared = (checks, _constraints_text(spec, checks))
+        if not extra_checks and len(_SHARED_CHECKS) < _SHARED_MAX:
+            _SHARED_CHECKS[key] = shared
+    label = (spec.description, spec.unit)
+    description = _DESCRIPTIONS.get(label)
+    if description is None:
+        description = _description_text(*label)
+        if len(_DESCRIPTIONS) < _SHARED_MAX:
+            _DESCRIPTIONS[label] = description
+    return CompiledParam(
+        spec=spec,
+        type=param_type,
+        attribute_path=attribute_parts(spec.name),
+        checks=shared[0],
+        constraints_text=shared[1],
+        descriptor_description=description,
+    )
+
+
+# Bounded: a process that reads schemas from other nodes (tune, audit) compiles many.
+_SHARED_MAX = 4096
+_SHARED_CHECKS: dict[tuple[str, str, str, bool], tuple[tuple[Validator, ...], str]] = {}
+_DESCRIPTIONS: dict[tuple[str, str], str] = {}
+
+
+def _build_checks(
+    spec: ParamSpec, param_type: ParamType, extra_checks: tuple[Validator, ...]
+) -> tuple[Validator, ...]:
     checks: list[Validator] = []
     if spec.range is not None:
         low, high, *steps = spec.range
@@ -218,12 +249,26 @@ def compile_param(spec: ParamSpec, extra_checks: tuple[Validator, ...] = ()) -> 
         checks.append(SubsetOf(spec.choices) if param_type.is_array else OneOf(spec.choices))
     checks.extend(build_validator(rule, argument, spec.type) for rule, argument in spec.validators)
     checks.extend(extra_checks)
-    return CompiledParam(
-        spec=spec,
-        type=param_type,
-        attribute_path=attribute_parts(spec.name),
-        checks=tuple(checks),
-    )
+    return tuple(checks)
+
+
+def _constraints_text(spec: ParamSpec, checks: tuple[Validator, ...]) -> str:
+    """The descriptor's additional_constraints: every rule in words, less a scalar range."""
+    parts = [check.describe() for check in checks]
+    first = checks[0] if checks else None
+    if isinstance(first, RosRange) and not first.each:
+        parts = parts[1:]
+    if spec.additional_constraints:
+        parts.append(spec.additional_constraints)
+    if spec.configure_only:
+        parts.append(CONFIGURE_ONLY_TEXT)
+    return "; ".join(parts)
+
+
+def _description_text(description: str, unit: str) -> str:
+    if unit:
+        return f"{description} [{unit}]" if description else f"[{unit}]"
+    return description
 
 
 @dataclass(frozen=True)

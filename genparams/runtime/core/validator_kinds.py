@@ -13,8 +13,6 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
-import regex as regex_engine
-
 from genparams.runtime.core.errors import GenparamsError
 from genparams.runtime.core.types import INT64_MAX, INT64_MIN
 from genparams.runtime.core.validators import (
@@ -118,9 +116,11 @@ def _length(arg: Any, _type: str) -> Length:
 def _pattern(arg: Any, _type: str) -> Pattern:
     if not isinstance(arg, str):
         raise ValidatorArgumentError(f"pattern must be a string, got {fmt(arg)}")
+    import regex as engine  # on first use, as Pattern imports it
+
     try:
         return Pattern(arg)
-    except (re.error, regex_engine.error) as exc:
+    except (re.error, engine.error) as exc:
         raise ValidatorArgumentError(f"pattern {arg!r} is not a valid regex: {exc}") from None
 
 

@@ -15,9 +15,10 @@ import operator
 import re
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
-from typing import Any, Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
-import regex as regex_engine
+if TYPE_CHECKING:
+    import regex as regex_engine
 
 # rclpy compares doubles against range bounds and steps with this tolerance.
 ROS_RELATIVE_TOLERANCE = 1e-6
@@ -257,9 +258,9 @@ class Pattern:
 
     def __post_init__(self) -> None:
         re.compile(self.regex)  # the syntax users write, with re's error messages
-        object.__setattr__(
-            self, "_compiled", regex_engine.compile(self.regex, flags=regex_engine.V0)
-        )
+        import regex as engine  # on first use: importing it costs a process ~10 ms
+
+        object.__setattr__(self, "_compiled", engine.compile(self.regex, flags=engine.V0))
 
     def __call__(self, value: Any) -> str | None:
         items = (value,) if isinstance(value, str) else value

@@ -128,6 +128,7 @@ class Binding(Generic[P]):
             node,
             [(ros_parameter(p, n, by_full_name[n]), descriptor_for(p, n)) for n, p in owned.items()]
             + aliases.declarations(owned, by_full_name),
+            spec.name,
         )
         given = [name for name in reader.given if name in parameters]  # conditions that hold
         report_overrides(notices, parameters, given, reader.renamed, full)

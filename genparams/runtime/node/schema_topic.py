@@ -164,24 +164,45 @@ def node_message_text(node_name: str, classes: list[ClassText]) -> str:
 
 
 class SchemaPublisher:
-    """The one latched publisher of a node, holding every class declared there."""
+    """The one latched publisher of a node, holding every class declared there.
+
+    The publisher exists from the first declare, so the topic is discoverable at
+    once; the message is built and published when a subscriber first matches it
+    (a tuning page, ``genparams audit``, ``ros2 topic echo``, a bag recorder), and
+    again at every later declare. A node nobody asks never builds its description
+    nor keeps a copy of it in the DDS writer's history. The matched event is
+    delivered by the node's executor, as its parameter services are; on a
+    middleware without matched events the message is published at once.
+    """
 
     def __init__(self, node: Node) -> None:
+        from rclpy.event_handler import PublisherEventCallbacks, UnsupportedEventTypeError
         from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
         from std_msgs.msg import String
 
         # The node's name, not the node: the registry below is keyed weakly by the node,
         # and a value holding its key would keep every node ever declared alive.
         self.node_name = node.get_fully_qualified_name()
-        self.classes: dict[tuple[str, str], ClassText] = {}
+        self.classes: dict[tuple[str, str], tuple[CompiledSchema, str]] = {}
         self.message_type = String
+        self.lock = threading.Lock()
+        self.requested = False  # a subscriber matched once: publish every change at once
         qos = QoSProfile(
             depth=1,
             history=HistoryPolicy.KEEP_LAST,
             reliability=ReliabilityPolicy.RELIABLE,
             durability=DurabilityPolicy.TRANSIENT_LOCAL,
         )
-        self.publisher: Publisher = node.create_publisher(String, SCHEMA_TOPIC, qos)
+        try:
+            self.publisher: Publisher = node.create_publisher(
+                String,
+                SCHEMA_TOPIC,
+                qos,
+                event_callbacks=PublisherEventCallbacks(matched=self.matched),
+            )
+        except UnsupportedEventTypeError:
+            self.requested = True
+            self.publisher = node.create_publisher(String, SCHEMA_TOPIC, qos)
 
     @classmethod
     def of(cls, node: Node) -> SchemaPublisher:
@@ -192,11 +213,21 @@ class SchemaPublisher:
             return found
 
     def add(self, compiled: CompiledSchema, prefix: str) -> None:
-        self.classes[(prefix, compiled.spec.name)] = class_text(compiled, prefix)
-        self.publish()
+        with self.lock:
+            self.classes[(prefix, compiled.spec.name)] = (compiled, prefix)
+            if self.requested or self.publisher.get_subscription_count() > 0:
+                self.requested = True
+                self.publish()
+
+    def matched(self, status: Any) -> None:
+        """The publisher's matched event: the first subscriber asks for the message."""
+        with self.lock:
+            if not self.requested and status.current_count > 0:
+                self.requested = True
+                self.publish()
 
     def message_text(self) -> str:
-        ordered = [self.classes[key] for key in sorted(self.classes)]
+        ordered = [class_text(*self.classes[key]) for key in sorted(self.classes)]
         return node_message_text(self.node_name, ordered)
 
     def publish(self) -> None:
@@ -210,5 +241,5 @@ _GUARD = threading.Lock()
 
 
 def publish_schema(node: Node, compiled: CompiledSchema, prefix: str) -> None:
-    """Add a declared class to its node's schema message and republish it."""
+    """Add a declared class to its node's schema message; republish it once asked for."""
     SchemaPublisher.of(node).add(compiled, prefix)
