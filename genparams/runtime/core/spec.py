@@ -14,12 +14,13 @@ from genparams.runtime.core.naming import (
     attribute_parts,
     entry_key_problem,
 )
-from genparams.runtime.core.rules import CompiledRule, RuleError, compile_rule, rules_by_parameter
+from genparams.runtime.core.records import Record, store
 from genparams.runtime.core.types import TYPES, ParamType
 from genparams.runtime.core.validator_kinds import build_validator
 from genparams.runtime.core.validators import Bounds, OneOf, RosRange, SubsetOf, Validator
 
 if TYPE_CHECKING:
+    from genparams.runtime.core.rules import CompiledRule
     from genparams.runtime.core.tree import Group
 
 
@@ -27,30 +28,92 @@ CONFIGURE_ONLY_TEXT = "changes only while the lifecycle node is unconfigured or 
 """The words of ``configure_only``: one source for descriptors, docs and refusals."""
 
 
-@dataclass(frozen=True, slots=True)
-class ParamSpec:
+class ParamSpec(Record):
+    """One parameter as a generated module describes it (a frozen record)."""
+
+    _fields = (
+        "name",
+        "type",
+        "default",
+        "required",
+        "description",
+        "read_only",
+        "unit",
+        "range",
+        "choices",
+        "validators",
+        "additional_constraints",
+        "deprecated",
+        "aliases",
+        "configure_only",
+        "adopt",
+        "optional",
+        "when",
+    )
+    __slots__ = _fields
     name: str  # dotted ROS name relative to the prefix
     type: str  # one of the nine schema type names
-    default: Any = None
-    required: bool = False
-    description: str = ""
-    read_only: bool = False
-    unit: str = ""
-    # (min, max) or (min, max, step); a missing step means any value in between.
-    range: tuple[Any, Any] | tuple[Any, Any, Any] | None = None
-    choices: tuple[Any, ...] | None = None
-    validators: tuple[tuple[str, Any], ...] = ()
-    additional_constraints: str = ""
-    deprecated: str = ""
-    aliases: tuple[str, ...] = ()  # old dotted names, relative to the prefix
-    configure_only: bool = False  # lifecycle nodes: set only while unconfigured or inactive
-    adopt: bool = False  # declared first by other code of the node: taken over, not refused
-    # Declared by type only (rclpy: declare_parameter(name, Parameter.Type.X)): the value is
-    # None, NOT_SET on the node, until an override or a set gives it one.
-    optional: bool = False
-    # Declared only when each named parameter holds one of its values at declaration:
-    # (("mode", ("advanced",)),). Decided once, as hand-written nodes decide at startup.
-    when: tuple[tuple[str, tuple[Any, ...]], ...] = ()
+    default: Any
+    required: bool
+    description: str
+    read_only: bool
+    unit: str
+    # (min, max) or (min, max, step); a missing step means any value in between
+    range: tuple[Any, Any] | tuple[Any, Any, Any] | None
+    choices: tuple[Any, ...] | None
+    validators: tuple[tuple[str, Any], ...]
+    additional_constraints: str
+    deprecated: str
+    aliases: tuple[str, ...]  # old dotted names, relative to the prefix
+    configure_only: bool  # lifecycle nodes: set only while unconfigured or inactive
+    # declared first by other code of the node: taken over, not refused
+    adopt: bool
+    # declared by type only: None (NOT_SET on the node) until given a value
+    optional: bool
+    # declared only when each named parameter holds one of its values: (("mode", ("advanced",)),)
+    when: tuple[tuple[str, tuple[Any, ...]], ...]
+
+    def __init__(
+        self,
+        name: str,
+        type: str,
+        default: Any = None,
+        required: bool = False,
+        description: str = "",
+        read_only: bool = False,
+        unit: str = "",
+        range: tuple[Any, Any] | tuple[Any, Any, Any] | None = None,
+        choices: tuple[Any, ...] | None = None,
+        validators: tuple[tuple[str, Any], ...] = (),
+        additional_constraints: str = "",
+        deprecated: str = "",
+        aliases: tuple[str, ...] = (),
+        configure_only: bool = False,
+        adopt: bool = False,
+        optional: bool = False,
+        when: tuple[tuple[str, tuple[Any, ...]], ...] = (),
+    ) -> None:
+        store(self, "name", name)
+        store(self, "type", type)
+        store(self, "default", default)
+        store(self, "required", required)
+        store(self, "description", description)
+        store(self, "read_only", read_only)
+        store(self, "unit", unit)
+        store(self, "range", range)
+        store(self, "choices", choices)
+        store(self, "validators", validators)
+        store(self, "additional_constraints", additional_constraints)
+        store(self, "deprecated", deprecated)
+        store(self, "aliases", aliases)
+        store(self, "configure_only", configure_only)
+        store(self, "adopt", adopt)
+        store(self, "optional", optional)
+        store(self, "when", when)
+
+    def replaced(self, **changes: Any) -> ParamSpec:
+        """A copy with ``changes`` (field name -> value), as dataclasses.replace makes."""
+        return ParamSpec(**{**dict(zip(self._fields, self._values(), strict=True)), **changes})
 
     def declared_with(self, values: Mapping[str, Any]) -> bool:
         """Whether the condition (``when``) holds for ``values``, by relative name."""
@@ -73,38 +136,67 @@ def _value_words(value: Any) -> str:
     return repr(value)
 
 
-@dataclass(frozen=True)
-class RuleSpec:
+class RuleSpec(Record):
     """A cross-parameter rule: ``check`` is an expression of ``runtime.rules``, kept as text."""
 
+    _fields = ("name", "check", "description")
+    __slots__ = _fields
     name: str
     check: str
-    description: str = ""
+    description: str
+
+    def __init__(self, name: str, check: str, description: str = "") -> None:
+        store(self, "name", name)
+        store(self, "check", check)
+        store(self, "description", description)
 
 
-@dataclass(frozen=True)
-class SchemaSpec:
+class SchemaSpec(Record):
     """A generated class's parameters.
 
     Parameters of mapped groups are templates: ``gains.*.p`` stands for
     ``gains.<key>.p`` for every item of the map's ``for_each`` parameter.
     """
 
+    _fields = ("name", "parameters", "groups", "maps", "rules")
+    __slots__ = _fields
     name: str
     parameters: tuple[ParamSpec, ...]
     groups: Mapping[str, type[Group]]  # dotted namespace -> generated class ("gains.*": entry)
-    maps: Mapping[str, str] = field(default_factory=dict)  # "gains" -> its for_each parameter
-    rules: tuple[RuleSpec, ...] = ()
+    maps: Mapping[str, str]  # "gains" -> its for_each parameter
+    rules: tuple[RuleSpec, ...]
+
+    def __init__(
+        self,
+        name: str,
+        parameters: tuple[ParamSpec, ...],
+        groups: Mapping[str, type[Group]],
+        maps: Mapping[str, str] | None = None,
+        rules: tuple[RuleSpec, ...] = (),
+    ) -> None:
+        store(self, "name", name)
+        store(self, "parameters", parameters)
+        store(self, "groups", groups)
+        store(self, "maps", {} if maps is None else maps)
+        store(self, "rules", rules)
 
 
-@dataclass(frozen=True, slots=True)
-class EntryKeys:
+class EntryKeys(Record):
     """The items of a ``for_each`` parameter name mapped entries: distinct, of ENTRY_KEY_RULE."""
 
+    _fields = ("maps", "taken", "rule")
+    __slots__ = _fields
     maps: str  # the mapped groups it keys, for messages
     # (in-place map, the names beside its entries): no key may repeat one of them
-    taken: tuple[tuple[str, frozenset[str]], ...] = ()
-    rule: str = "for_each"
+    taken: tuple[tuple[str, frozenset[str]], ...]
+    rule: str
+
+    def __init__(
+        self, maps: str, taken: tuple[tuple[str, frozenset[str]], ...] = (), rule: str = "for_each"
+    ) -> None:
+        store(self, "maps", maps)
+        store(self, "taken", taken)
+        store(self, "rule", rule)
 
     def __call__(self, value: Any) -> str | None:
         reason = entry_key_problem(value, self.maps)
@@ -299,6 +391,11 @@ class CompiledSchema:
 
 
 def compile_rules(spec: SchemaSpec) -> tuple[CompiledRule, ...]:
+    if not spec.rules:
+        return ()
+    # The expression language loads with the first class that has rules.
+    from genparams.runtime.core.rules import RuleError, compile_rule
+
     types = {p.name: p.type for p in spec.parameters if ENTRY_KEY not in p.name.split(".")}
     compiled = []
     for rule in spec.rules:
@@ -379,4 +476,9 @@ def _compile(spec: SchemaSpec) -> CompiledSchema:
         (templates if is_template else parameters)[param_spec.name] = compiled
         aliases.update(dict.fromkeys(param_spec.aliases, param_spec.name))
     rules = compile_rules(spec)
-    return CompiledSchema(spec, parameters, templates, aliases, rules, rules_by_parameter(rules))
+    by_parameter: dict[str, tuple[CompiledRule, ...]] = {}
+    if rules:
+        from genparams.runtime.core.rules import rules_by_parameter
+
+        by_parameter = rules_by_parameter(rules)
+    return CompiledSchema(spec, parameters, templates, aliases, rules, by_parameter)

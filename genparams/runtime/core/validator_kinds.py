@@ -10,10 +10,10 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Callable
-from dataclasses import dataclass
 from typing import Any
 
 from genparams.runtime.core.errors import GenparamsError
+from genparams.runtime.core.records import Record, store
 from genparams.runtime.core.types import INT64_MAX, INT64_MIN
 from genparams.runtime.core.validators import (
     ALL_TYPES,
@@ -35,14 +35,27 @@ from genparams.runtime.core.validators import (
 )
 
 
-@dataclass(frozen=True)
-class ValidatorKind:
+class ValidatorKind(Record):
     """How one validator is spelled in a schema, what it applies to, how it is built."""
 
+    _fields = ("name", "applies_to", "build", "takes_argument")
+    __slots__ = _fields
     name: str
     applies_to: frozenset[str]
     build: Callable[[Any, str], Validator]  # (argument, parameter type) -> validator
-    takes_argument: bool = True
+    takes_argument: bool
+
+    def __init__(
+        self,
+        name: str,
+        applies_to: frozenset[str],
+        build: Callable[[Any, str], Validator],
+        takes_argument: bool = True,
+    ) -> None:
+        store(self, "name", name)
+        store(self, "applies_to", applies_to)
+        store(self, "build", build)
+        store(self, "takes_argument", takes_argument)
 
 
 class ValidatorArgumentError(GenparamsError, ValueError):

@@ -19,13 +19,11 @@ import hashlib
 import threading
 import weakref
 from collections.abc import Mapping
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from genparams import __version__
-from genparams.runtime.core.json_codec import dumps
 from genparams.runtime.core.naming import ENTRY_KEY, join_prefix
-from genparams.runtime.core.schema_message import FORMAT_VERSION
+from genparams.runtime.core.records import Record, store
 from genparams.runtime.core.spec import CompiledParam, CompiledSchema
 
 if TYPE_CHECKING:
@@ -118,6 +116,8 @@ def describe_class(compiled: CompiledSchema, prefix: str) -> dict[str, Any]:
 
 def schema_hash(body: Mapping[str, Any]) -> str:
     """A stable digest of a description: equal schemas under equal prefixes hash equal."""
+    from genparams.runtime.core.json_codec import dumps  # with the first message
+
     return text_hash(dumps(body, sort_keys=True, separators=(",", ":")))
 
 
@@ -125,12 +125,17 @@ def text_hash(text: str) -> str:
     return hashlib.sha256(text.encode("utf-8")).hexdigest()[:16]
 
 
-@dataclass(frozen=True)
-class ClassText:
+class ClassText(Record):
     """A class's description as JSON text, and its hash."""
 
+    _fields = ("text", "hash")
+    __slots__ = _fields
     text: str
     hash: str
+
+    def __init__(self, text: str, hash: str) -> None:
+        store(self, "text", text)
+        store(self, "hash", hash)
 
 
 # Every node that declares a class under a prefix publishes the same description:
@@ -143,6 +148,8 @@ def class_text(compiled: CompiledSchema, prefix: str) -> ClassText:
     key = (id(compiled), prefix)
     cached = _CLASS_TEXTS.get(key)
     if cached is None or cached[0] is not compiled:
+        from genparams.runtime.core.json_codec import dumps
+
         body = describe_class(compiled, prefix)
         cached = (compiled, ClassText(dumps(body, sort_keys=True), body["hash"]))
         _CLASS_TEXTS[key] = cached
@@ -151,6 +158,9 @@ def class_text(compiled: CompiledSchema, prefix: str) -> ClassText:
 
 def node_message_text(node_name: str, classes: list[ClassText]) -> str:
     """The node's message: the JSON of node_message, assembled from cached class texts."""
+    from genparams.runtime.core.json_codec import dumps
+    from genparams.runtime.core.schema_message import FORMAT_VERSION
+
     node_hash = schema_hash({"classes": [c.hash for c in classes]})
     head = {"format": FORMAT_VERSION, "genparams": __version__, "hash": node_hash}
     # Keys in sorted order, as json.dumps(sort_keys=True) would write them.
