@@ -3,6 +3,9 @@
 from __future__ import annotations
 
 import json
+import os
+import subprocess
+import sys
 import time
 from pathlib import Path
 from typing import Any
@@ -14,6 +17,7 @@ from std_msgs.msg import String
 from genparams import __version__
 from genparams.runtime.node.schema_topic import SCHEMA_TOPIC_SUFFIX
 from genparams.tune.graph import SCHEMA_QOS
+from tests.patience import WAIT_S
 from tests.support import ROOT, RosHarness, load_generated
 
 
@@ -134,3 +138,36 @@ def test_the_message_is_sent_when_a_subscriber_first_asks(ros: RosHarness, tmp_p
         ros.client_node.destroy_subscription(subscription)
     (message,) = received
     assert [c["class"] for c in json.loads(message.data)["classes"]] == ["arm"]
+
+
+STRING_ALONE = """
+import sys
+import rclpy
+from rclpy.context import Context
+from rclpy.node import Node
+from genparams.runtime.node.schema_topic import SchemaPublisher, string_message_type
+context = Context()
+rclpy.init(context=context)
+node = Node("string_alone", context=context)
+publisher = SchemaPublisher.of(node)
+print("std_msgs.msg" in sys.modules)
+from std_msgs.msg import String
+print(String is publisher.message_type is string_message_type())
+node.destroy_node()
+rclpy.shutdown(context=context)
+"""
+
+
+def test_the_publisher_loads_std_msgs_string_alone_and_shares_it() -> None:
+    """Only String's module is loaded for the topic; std_msgs.msg, imported later, hands
+    out the same class (a fresh process: this one imported std_msgs.msg already)."""
+    result = subprocess.run(
+        [sys.executable, "-c", STRING_ALONE],
+        capture_output=True,
+        text=True,
+        timeout=WAIT_S,
+        env=dict(os.environ),
+        check=False,
+    )
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.split() == ["False", "True"]

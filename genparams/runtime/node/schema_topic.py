@@ -16,6 +16,9 @@ travels as ``{"$float": "nan"}``, never as a token a strict reader refuses.
 from __future__ import annotations
 
 import hashlib
+import importlib.util
+import os
+import sys
 import threading
 import weakref
 from collections.abc import Mapping
@@ -173,6 +176,42 @@ def node_message_text(node_name: str, classes: list[ClassText]) -> str:
     )
 
 
+def string_message_type() -> Any:
+    """std_msgs/msg/String, loading nothing else of std_msgs when it can.
+
+    ``std_msgs.msg`` imports all of its thirty message modules (5-10 ms of a
+    process); the schema topic needs one. rosidl_generator_py writes each message
+    to ``<package>/msg/_<name>.py``, so that file is loaded alone, under the name
+    ``std_msgs.msg`` itself imports it by: a later ``import std_msgs.msg`` finds
+    it there and hands out the very same class. Anything unexpected (the package
+    imported already, another layout) takes the ordinary import.
+    """
+    name = "std_msgs.msg._string"
+    loaded = sys.modules.get("std_msgs.msg")
+    if loaded is None and name not in sys.modules:
+        try:
+            package = importlib.util.find_spec("std_msgs")
+            folders = package.submodule_search_locations if package is not None else None
+            path = os.path.join(next(iter(folders or ())), "msg", "_string.py")
+            spec = importlib.util.spec_from_file_location(name, path)
+            if spec is not None and spec.loader is not None and os.path.isfile(path):
+                module = importlib.util.module_from_spec(spec)
+                sys.modules[name] = module
+                try:
+                    spec.loader.exec_module(module)
+                except BaseException:
+                    del sys.modules[name]
+                    raise
+        except (ImportError, OSError, StopIteration):
+            pass
+    found = sys.modules.get(name)
+    if found is not None and hasattr(found, "String"):
+        return found.String
+    from std_msgs.msg import String
+
+    return String
+
+
 class SchemaPublisher:
     """The one latched publisher of a node, holding every class declared there.
 
@@ -188,7 +227,8 @@ class SchemaPublisher:
     def __init__(self, node: Node) -> None:
         from rclpy.event_handler import PublisherEventCallbacks, UnsupportedEventTypeError
         from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
-        from std_msgs.msg import String
+
+        String = string_message_type()  # noqa: N806 (a class)
 
         # The node's name, not the node: the registry below is keyed weakly by the node,
         # and a value holding its key would keep every node ever declared alive.
