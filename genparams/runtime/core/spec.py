@@ -14,18 +14,18 @@ from genparams.runtime.core.naming import (
     attribute_parts,
     entry_key_problem,
 )
+from genparams.runtime.core.param_checks import (
+    CONFIGURE_ONLY_TEXT,
+    checks_and_texts,
+    description_text,
+)
 from genparams.runtime.core.records import Record, store
 from genparams.runtime.core.types import TYPES, ParamType
-from genparams.runtime.core.validator_kinds import build_validator
-from genparams.runtime.core.validators import Bounds, OneOf, RosRange, SubsetOf, Validator
+from genparams.runtime.core.validators import Bounds, RosRange, Validator
 
 if TYPE_CHECKING:
     from genparams.runtime.core.rules import CompiledRule
     from genparams.runtime.core.tree import Group
-
-
-CONFIGURE_ONLY_TEXT = "changes only while the lifecycle node is unconfigured or inactive"
-"""The words of ``configure_only``: one source for descriptors, docs and refusals."""
 
 
 class ParamSpec(Record):
@@ -282,85 +282,15 @@ class CompiledParam:
 
 
 def compile_param(spec: ParamSpec, extra_checks: tuple[Validator, ...] = ()) -> CompiledParam:
-    param_type = TYPES[spec.type]
-    shared = None
-    if not extra_checks:
-        # Parameters that read the same range, choices and validators share their validator
-        # objects and texts (repr tells 1 from 1.0 and True, which == does not).
-        key = (
-            spec.type,
-            repr((spec.range, spec.choices, spec.validators)),
-            spec.additional_constraints,
-            spec.configure_only,
-        )
-        shared = _SHARED_CHECKS.get(key)
-    if shared is None:
-        checks = _build_checks(spec, param_type, extra_checks)
-        shared = (checks, _constraints_text(spec, checks))
-        if not extra_checks and len(_SHARED_CHECKS) < _SHARED_MAX:
-            _SHARED_CHECKS[key] = shared
-    label = (spec.description, spec.unit)
-    description = _DESCRIPTIONS.get(label)
-    if description is None:
-        description = _description_text(*label)
-        if len(_DESCRIPTIONS) < _SHARED_MAX:
-            _DESCRIPTIONS[label] = description
+    checks, constraints_text = checks_and_texts(spec, extra_checks)
     return CompiledParam(
         spec=spec,
-        type=param_type,
+        type=TYPES[spec.type],
         attribute_path=attribute_parts(spec.name),
-        checks=shared[0],
-        constraints_text=shared[1],
-        descriptor_description=description,
+        checks=checks,
+        constraints_text=constraints_text,
+        descriptor_description=description_text(spec.description, spec.unit),
     )
-
-
-# Bounded: a process that reads schemas from other nodes (tune, audit) compiles many.
-_SHARED_MAX = 4096
-_SHARED_CHECKS: dict[tuple[str, str, str, bool], tuple[tuple[Validator, ...], str]] = {}
-_DESCRIPTIONS: dict[tuple[str, str], str] = {}
-
-
-def _build_checks(
-    spec: ParamSpec, param_type: ParamType, extra_checks: tuple[Validator, ...]
-) -> tuple[Validator, ...]:
-    checks: list[Validator] = []
-    if spec.range is not None:
-        low, high, *steps = spec.range
-        step = steps[0] if steps else 0
-        checks.append(
-            RosRange(
-                low,
-                high,
-                step,
-                integer=param_type.scalar_kind == "int",
-                each=param_type.is_array,
-            )
-        )
-    if spec.choices is not None:
-        checks.append(SubsetOf(spec.choices) if param_type.is_array else OneOf(spec.choices))
-    checks.extend(build_validator(rule, argument, spec.type) for rule, argument in spec.validators)
-    checks.extend(extra_checks)
-    return tuple(checks)
-
-
-def _constraints_text(spec: ParamSpec, checks: tuple[Validator, ...]) -> str:
-    """The descriptor's additional_constraints: every rule in words, less a scalar range."""
-    parts = [check.describe() for check in checks]
-    first = checks[0] if checks else None
-    if isinstance(first, RosRange) and not first.each:
-        parts = parts[1:]
-    if spec.additional_constraints:
-        parts.append(spec.additional_constraints)
-    if spec.configure_only:
-        parts.append(CONFIGURE_ONLY_TEXT)
-    return "; ".join(parts)
-
-
-def _description_text(description: str, unit: str) -> str:
-    if unit:
-        return f"{description} [{unit}]" if description else f"[{unit}]"
-    return description
 
 
 @dataclass(frozen=True)
