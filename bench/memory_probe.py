@@ -3,8 +3,9 @@
 ``python -m bench.memory_probe DIR MODULE CLASS MODE``: CLASS is the generated
 class, or ``-`` for the hand-written module. MODE ``rss`` reports how much the
 resident set grew from a baseline of rclpy initialised
-with an empty node; ``traced`` reports the Python memory still allocated
-afterwards (``tracemalloc``), which is exact but slows the run. Both count
+with an empty node; ``rss-bare`` the same for a class declared with
+``publish_schema=False``; ``traced`` reports the Python memory still allocated
+afterwards (``tracemalloc``), which is exact but slows the run. All count
 importing the module and declaring.
 """
 
@@ -43,7 +44,7 @@ def main(directory: str, module_name: str, class_name: str, mode: str) -> None:
     if class_name == "-":
         module.declare(node)
     else:
-        getattr(module, class_name).declare(node)
+        getattr(module, class_name).declare(node, publish_schema=mode != "rss-bare")
     if mode == "traced":
         grown = tracemalloc.get_traced_memory()[0]
         tracemalloc.stop()

@@ -44,7 +44,11 @@ DECLARE_STEPS: dict[str, tuple[tuple[str, str], ...]] = {
         ("declaring.py", "descriptor_for"),
     ),
     "genparams: build the typed tree": (("tree.py", "build_tree"),),
-    "rclpy: declare (_declare_parameter_common)": (("node.py", "_declare_parameter_common"),),
+    # plain rclpy declares through _declare_parameter_common, one round per parameter;
+    # genparams through the same set path, one round per DECLARE_ROUND parameters.
+    "rclpy: declare rounds (_set_parameters_atomically_common)": (
+        ("node.py", "_set_parameters_atomically_common"),
+    ),
     "rclpy: parameter event publish": (("publisher.py", "publish"),),
     "genparams: whole declare": (("binding.py", "declare"),),
 }

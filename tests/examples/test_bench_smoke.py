@@ -104,12 +104,13 @@ def test_quick_benchmark_writes_every_scenario(tmp_path: Path) -> None:
         "declare on a fresh node, N=20 |",
         "whole process, start to declared, N=30 |",
         "RSS growth, N=40 |",
+        "RSS growth, N=40, publish_schema=False |",
         "read cfg.",
         "snapshot() O(1)",
         "snapshot() never torn",
     ):
         assert f"| {target}" in targets, target
-    assert targets.count(" | met |") + targets.count(" | **missed** |") == 10
+    assert targets.count(" | met |") + targets.count(" | **missed** |") == 11
 
 
 def test_profile_splits_declare_and_set_into_steps() -> None:
@@ -144,8 +145,8 @@ def test_start_profile_times_every_step_of_both_sides() -> None:
     )
     assert result.returncode == 0, result.stderr
     sides = [line.split()[0] for line in result.stdout.splitlines() if line.startswith("  ")]
-    assert (sides.count("plain"), sides.count("genparams")) == (4, 9)
-    assert "  genparams  load std_msgs/String" in result.stdout
+    assert (sides.count("plain"), sides.count("genparams")) == (4, 7)
+    assert "  genparams  compile the class spec (first declare)" in result.stdout
 
 
 def test_check_params_scale_runs_and_its_largest_file_fits_the_limit(

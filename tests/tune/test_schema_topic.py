@@ -3,16 +3,21 @@
 from __future__ import annotations
 
 import json
+import os
+import subprocess
+import sys
 import time
 from pathlib import Path
 from typing import Any
 
 from rclpy.node import Node
+from rclpy.qos import QoSProfile, ReliabilityPolicy
 from std_msgs.msg import String
 
 from genparams import __version__
 from genparams.live.schema_topics import SCHEMA_QOS
 from genparams.runtime.node.schema_topic import SCHEMA_TOPIC_SUFFIX
+from tests.patience import WAIT_S
 from tests.support import ROOT, RosHarness, load_generated
 
 
@@ -112,3 +117,57 @@ def test_a_destroyed_node_is_not_kept_alive(ros: RosHarness, tmp_path: Path) -> 
     ros.destroy_test_nodes()
     gc.collect()
     assert alive() is None
+
+
+def test_the_message_is_sent_when_a_subscriber_first_asks(ros: RosHarness, tmp_path: Path) -> None:
+    """Nothing is published at declare: a volatile subscriber (which a message published
+    before it matched would never reach) still gets the first message, sent on its match."""
+    module = load_generated(ROOT / "examples/arm/arm.yaml", tmp_path)
+    node = ros.node()
+    module.ArmParams.declare(node)
+    topic = node.get_fully_qualified_name() + SCHEMA_TOPIC_SUFFIX
+    assert topic in dict(node.get_topic_names_and_types())  # discoverable at once
+    received: list[String] = []
+    volatile = QoSProfile(depth=1, reliability=ReliabilityPolicy.RELIABLE)
+    subscription = ros.client_node.create_subscription(String, topic, received.append, volatile)
+    try:
+        deadline = time.monotonic() + 30.0
+        while not received and time.monotonic() < deadline:
+            ros.executor.spin_once(timeout_sec=0.05)
+    finally:
+        ros.client_node.destroy_subscription(subscription)
+    (message,) = received
+    assert [c["class"] for c in json.loads(message.data)["classes"]] == ["arm"]
+
+
+STRING_ALONE = """
+import sys
+import rclpy
+from rclpy.context import Context
+from rclpy.node import Node
+from genparams.runtime.node.schema_topic import SchemaPublisher, string_message_type
+context = Context()
+rclpy.init(context=context)
+node = Node("string_alone", context=context)
+publisher = SchemaPublisher.of(node)
+print("std_msgs.msg" in sys.modules)
+from std_msgs.msg import String
+print(String is publisher.message_type is string_message_type())
+node.destroy_node()
+rclpy.shutdown(context=context)
+"""
+
+
+def test_the_publisher_loads_std_msgs_string_alone_and_shares_it() -> None:
+    """Only String's module is loaded for the topic; std_msgs.msg, imported later, hands
+    out the same class (a fresh process: this one imported std_msgs.msg already)."""
+    result = subprocess.run(
+        [sys.executable, "-c", STRING_ALONE],
+        capture_output=True,
+        text=True,
+        timeout=WAIT_S,
+        env=dict(os.environ),
+        check=False,
+    )
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.split() == ["False", "True"]

@@ -13,26 +13,41 @@ Subscribers receive the committed change, with values before and after.
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import dataclass
 from typing import Any, Generic, TypeVar
+
+from genparams.runtime.core.records import Record, store
 
 P = TypeVar("P")
 
 
-@dataclass(frozen=True)
-class Change:
+class Change(Record):
+    """One parameter's committed change (a frozen record)."""
+
+    _fields = ("name", "old", "new")  # __init__ order
+    __slots__ = _fields
     name: str  # dotted ROS name relative to the class's prefix
     old: Any
     new: Any
 
+    def __init__(self, name: str, old: Any, new: Any) -> None:
+        store(self, "name", name)
+        store(self, "old", old)
+        store(self, "new", new)
 
-@dataclass(frozen=True)
-class Changes(Generic[P]):
+
+class Changes(Record, Generic[P]):
     """One accepted set: ``before`` and ``after`` are consistent snapshots."""
 
+    _fields = ("before", "after", "changed")  # __init__ order
+    __slots__ = _fields
     before: P
     after: P
     changed: tuple[Change, ...]
+
+    def __init__(self, before: P, after: P, changed: tuple[Change, ...]) -> None:
+        store(self, "before", before)
+        store(self, "after", after)
+        store(self, "changed", changed)
 
     @property
     def names(self) -> frozenset[str]:

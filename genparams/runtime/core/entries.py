@@ -4,11 +4,12 @@ from __future__ import annotations
 
 import itertools
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from typing import Any
 
 from genparams.runtime.core.naming import ENTRY_KEY, ENTRY_KEY_RULE, OVERRIDE_KEYS, is_entry_key
 from genparams.runtime.core.problems import ParameterProblem
+from genparams.runtime.core.records import Record, store
 from genparams.runtime.core.resolve import resolve_values
 from genparams.runtime.core.spec import CompiledParam, CompiledSchema
 
@@ -44,7 +45,7 @@ def instantiate(template: CompiledParam, keys: Sequence[str]) -> CompiledParam:
     """The parameter of one entry: each ``*`` of the template replaced by the next key."""
     name = ".".join(_fill(template.name.split("."), keys))
     path = tuple(_fill(template.attribute_path, keys))
-    return replace(template, spec=replace(template.spec, name=name), attribute_path=path)
+    return replace(template, spec=template.spec.replaced(name=name), attribute_path=path)
 
 
 def key_slot(compiled: CompiledSchema, map_path: str) -> str:
@@ -182,15 +183,21 @@ def resolve_all(
 PLACES_BEYOND = 1000  # see map_places
 
 
-@dataclass(frozen=True)
-class MapPlace:
+class MapPlace(Record):
     """One mapped group of a schema message where it stands on a node: ``path`` is the
     group's place (``controllers.front.gains`` for the group ``controllers.*.gains``),
     ``keys`` its entries' keys there."""
 
+    _fields = ("group", "path", "keys")
+    __slots__ = _fields
     group: Mapping[str, Any]  # the message's map: path, for_each, fields (full names)
     path: str
     keys: tuple[str, ...]
+
+    def __init__(self, group: Mapping[str, Any], path: str, keys: tuple[str, ...]) -> None:
+        store(self, "group", group)
+        store(self, "path", path)
+        store(self, "keys", keys)
 
     @property
     def is_open(self) -> bool:

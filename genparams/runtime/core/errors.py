@@ -26,7 +26,7 @@ class ParameterDeclarationError(GenparamsError):
         noun = "problem" if count == 1 else "problems"
         lines = [f"{node}: cannot {doing} {schema} parameters ({count} {noun}):"]
         lines.extend(f"  - {render_problem(p)}" for p in self.problems)
-        super().__init__("\n".join(lines))
+        Exception.__init__(self, "\n".join(lines))  # whatever else a subclass derives from
 
 
 class DetachedSnapshotError(GenparamsError, RuntimeError):

@@ -16,9 +16,9 @@ compiler to report a problem; ``genparams.errors`` exports it to the rest.
 from __future__ import annotations
 
 from collections.abc import Iterable
-from dataclasses import dataclass
 from typing import Protocol
 
+from genparams.runtime.core.records import Record, store
 from genparams.runtime.core.visible import visible
 
 
@@ -42,8 +42,7 @@ READ_ONLY = "read-only: set it when the node starts (-p, a params file or launch
 """Why a set of a ``read_only`` parameter is refused, by the node and by a remote client."""
 
 
-@dataclass(frozen=True, slots=True)
-class ParameterProblem:
+class ParameterProblem(Record):
     """A problem with a parameter: one the runtime finds with a value (at a set, at declare,
     remotely), or one a command finds with a parameter of a running node.
 
@@ -54,10 +53,18 @@ class ParameterProblem:
     a set that passes builds none.
     """
 
+    _fields = ("key", "message", "rule", "place")  # __init__ order
+    __slots__ = _fields
     key: str
     message: str
-    rule: str = ""
-    place: str = ""
+    rule: str
+    place: str
+
+    def __init__(self, key: str, message: str, rule: str = "", place: str = "") -> None:
+        store(self, "key", key)
+        store(self, "message", message)
+        store(self, "rule", rule)
+        store(self, "place", place)
 
     def __str__(self) -> str:
         return render_problem(self)

@@ -6,12 +6,12 @@ from collections.abc import Callable, Iterable, Iterator, Mapping
 from typing import TYPE_CHECKING, Any
 
 from genparams.runtime.core.problems import ParameterProblem
-from genparams.runtime.core.rules import CompiledRule
 from genparams.runtime.core.spec import CompiledParam, compile_schema
 from genparams.runtime.core.tree import get_path
 
 if TYPE_CHECKING:
     from genparams.runtime.core.params_view import ParamsView
+    from genparams.runtime.core.rules import CompiledRule
 
 
 class MergedValues(Mapping[str, Any]):

@@ -14,43 +14,106 @@ from genparams.runtime.core.naming import (
     attribute_parts,
     entry_key_problem,
 )
-from genparams.runtime.core.rules import CompiledRule, RuleError, compile_rule, rules_by_parameter
+from genparams.runtime.core.param_checks import (
+    CONFIGURE_ONLY_TEXT,
+    checks_and_texts,
+    description_text,
+)
+from genparams.runtime.core.records import Record, store
 from genparams.runtime.core.types import TYPES, ParamType
-from genparams.runtime.core.validator_kinds import build_validator
-from genparams.runtime.core.validators import Bounds, OneOf, RosRange, SubsetOf, Validator
+from genparams.runtime.core.validators import Bounds, RosRange, Validator
 
 if TYPE_CHECKING:
+    from genparams.runtime.core.rules import CompiledRule
     from genparams.runtime.core.tree import Group
 
 
-CONFIGURE_ONLY_TEXT = "changes only while the lifecycle node is unconfigured or inactive"
-"""The words of ``configure_only``: one source for descriptors, docs and refusals."""
+class ParamSpec(Record):
+    """One parameter as a generated module describes it (a frozen record)."""
 
-
-@dataclass(frozen=True, slots=True)
-class ParamSpec:
+    _fields = (
+        "name",
+        "type",
+        "default",
+        "required",
+        "description",
+        "read_only",
+        "unit",
+        "range",
+        "choices",
+        "validators",
+        "additional_constraints",
+        "deprecated",
+        "aliases",
+        "configure_only",
+        "adopt",
+        "optional",
+        "when",
+    )
+    __slots__ = _fields
     name: str  # dotted ROS name relative to the prefix
     type: str  # one of the nine schema type names
-    default: Any = None
-    required: bool = False
-    description: str = ""
-    read_only: bool = False
-    unit: str = ""
-    # (min, max) or (min, max, step); a missing step means any value in between.
-    range: tuple[Any, Any] | tuple[Any, Any, Any] | None = None
-    choices: tuple[Any, ...] | None = None
-    validators: tuple[tuple[str, Any], ...] = ()
-    additional_constraints: str = ""
-    deprecated: str = ""
-    aliases: tuple[str, ...] = ()  # old dotted names, relative to the prefix
-    configure_only: bool = False  # lifecycle nodes: set only while unconfigured or inactive
-    adopt: bool = False  # declared first by other code of the node: taken over, not refused
-    # Declared by type only (rclpy: declare_parameter(name, Parameter.Type.X)): the value is
-    # None, NOT_SET on the node, until an override or a set gives it one.
-    optional: bool = False
-    # Declared only when each named parameter holds one of its values at declaration:
-    # (("mode", ("advanced",)),). Decided once, as hand-written nodes decide at startup.
-    when: tuple[tuple[str, tuple[Any, ...]], ...] = ()
+    default: Any
+    required: bool
+    description: str
+    read_only: bool
+    unit: str
+    # (min, max) or (min, max, step); a missing step means any value in between
+    range: tuple[Any, Any] | tuple[Any, Any, Any] | None
+    choices: tuple[Any, ...] | None
+    validators: tuple[tuple[str, Any], ...]
+    additional_constraints: str
+    deprecated: str
+    aliases: tuple[str, ...]  # old dotted names, relative to the prefix
+    configure_only: bool  # lifecycle nodes: set only while unconfigured or inactive
+    # declared first by other code of the node: taken over, not refused
+    adopt: bool
+    # declared by type only: None (NOT_SET on the node) until given a value
+    optional: bool
+    # declared only when each named parameter holds one of its values: (("mode", ("advanced",)),)
+    when: tuple[tuple[str, tuple[Any, ...]], ...]
+
+    def __init__(
+        self,
+        name: str,
+        type: str,
+        default: Any = None,
+        required: bool = False,
+        description: str = "",
+        read_only: bool = False,
+        unit: str = "",
+        range: tuple[Any, Any] | tuple[Any, Any, Any] | None = None,
+        choices: tuple[Any, ...] | None = None,
+        validators: tuple[tuple[str, Any], ...] = (),
+        additional_constraints: str = "",
+        deprecated: str = "",
+        aliases: tuple[str, ...] = (),
+        configure_only: bool = False,
+        adopt: bool = False,
+        optional: bool = False,
+        when: tuple[tuple[str, tuple[Any, ...]], ...] = (),
+    ) -> None:
+        store(self, "name", name)
+        store(self, "type", type)
+        store(self, "default", default)
+        store(self, "required", required)
+        store(self, "description", description)
+        store(self, "read_only", read_only)
+        store(self, "unit", unit)
+        store(self, "range", range)
+        store(self, "choices", choices)
+        store(self, "validators", validators)
+        store(self, "additional_constraints", additional_constraints)
+        store(self, "deprecated", deprecated)
+        store(self, "aliases", aliases)
+        store(self, "configure_only", configure_only)
+        store(self, "adopt", adopt)
+        store(self, "optional", optional)
+        store(self, "when", when)
+
+    def replaced(self, **changes: Any) -> ParamSpec:
+        """A copy with ``changes`` (field name -> value), as dataclasses.replace makes."""
+        return ParamSpec(**{**dict(zip(self._fields, self._values(), strict=True)), **changes})
 
     def declared_with(self, values: Mapping[str, Any]) -> bool:
         """Whether the condition (``when``) holds for ``values``, by relative name."""
@@ -73,38 +136,67 @@ def _value_words(value: Any) -> str:
     return repr(value)
 
 
-@dataclass(frozen=True)
-class RuleSpec:
+class RuleSpec(Record):
     """A cross-parameter rule: ``check`` is an expression of ``runtime.rules``, kept as text."""
 
+    _fields = ("name", "check", "description")
+    __slots__ = _fields
     name: str
     check: str
-    description: str = ""
+    description: str
+
+    def __init__(self, name: str, check: str, description: str = "") -> None:
+        store(self, "name", name)
+        store(self, "check", check)
+        store(self, "description", description)
 
 
-@dataclass(frozen=True)
-class SchemaSpec:
+class SchemaSpec(Record):
     """A generated class's parameters.
 
     Parameters of mapped groups are templates: ``gains.*.p`` stands for
     ``gains.<key>.p`` for every item of the map's ``for_each`` parameter.
     """
 
+    _fields = ("name", "parameters", "groups", "maps", "rules")
+    __slots__ = _fields
     name: str
     parameters: tuple[ParamSpec, ...]
     groups: Mapping[str, type[Group]]  # dotted namespace -> generated class ("gains.*": entry)
-    maps: Mapping[str, str] = field(default_factory=dict)  # "gains" -> its for_each parameter
-    rules: tuple[RuleSpec, ...] = ()
+    maps: Mapping[str, str]  # "gains" -> its for_each parameter
+    rules: tuple[RuleSpec, ...]
+
+    def __init__(
+        self,
+        name: str,
+        parameters: tuple[ParamSpec, ...],
+        groups: Mapping[str, type[Group]],
+        maps: Mapping[str, str] | None = None,
+        rules: tuple[RuleSpec, ...] = (),
+    ) -> None:
+        store(self, "name", name)
+        store(self, "parameters", parameters)
+        store(self, "groups", groups)
+        store(self, "maps", {} if maps is None else maps)
+        store(self, "rules", rules)
 
 
-@dataclass(frozen=True, slots=True)
-class EntryKeys:
+class EntryKeys(Record):
     """The items of a ``for_each`` parameter name mapped entries: distinct, of ENTRY_KEY_RULE."""
 
+    _fields = ("maps", "taken", "rule")
+    __slots__ = _fields
     maps: str  # the mapped groups it keys, for messages
     # (in-place map, the names beside its entries): no key may repeat one of them
-    taken: tuple[tuple[str, frozenset[str]], ...] = ()
-    rule: str = "for_each"
+    taken: tuple[tuple[str, frozenset[str]], ...]
+    rule: str
+
+    def __init__(
+        self, maps: str, taken: tuple[tuple[str, frozenset[str]], ...] = (), rule: str = "for_each"
+    ) -> None:
+        store(self, "maps", maps)
+        store(self, "taken", taken)
+        store(self, "rule", rule)
 
     def __call__(self, value: Any) -> str | None:
         reason = entry_key_problem(value, self.maps)
@@ -133,6 +225,11 @@ class CompiledParam:
     type: ParamType
     attribute_path: tuple[str, ...]
     checks: tuple[Validator, ...]
+    # The descriptor's texts, made once (and shared between parameters that read the same):
+    # ``additional_constraints`` (``constraints`` less a scalar range, which travels in the
+    # descriptor's own range fields) and the description with its unit.
+    constraints_text: str = ""
+    descriptor_description: str = ""
 
     @property
     def name(self) -> str:
@@ -183,46 +280,16 @@ class CompiledParam:
             parts.append(CONFIGURE_ONLY_TEXT)
         return tuple(parts)
 
-    @property
-    def constraints_text(self) -> str:
-        """The descriptor's additional_constraints: ``constraints`` less a scalar range,
-        which travels in the descriptor's own range fields."""
-        if self.ros_range is None:
-            return "; ".join(self.constraints)
-        return "; ".join(self.constraints[1:])
-
-    @property
-    def descriptor_description(self) -> str:
-        text = self.spec.description
-        if self.spec.unit:
-            text = f"{text} [{self.spec.unit}]" if text else f"[{self.spec.unit}]"
-        return text
-
 
 def compile_param(spec: ParamSpec, extra_checks: tuple[Validator, ...] = ()) -> CompiledParam:
-    param_type = TYPES[spec.type]
-    checks: list[Validator] = []
-    if spec.range is not None:
-        low, high, *steps = spec.range
-        step = steps[0] if steps else 0
-        checks.append(
-            RosRange(
-                low,
-                high,
-                step,
-                integer=param_type.scalar_kind == "int",
-                each=param_type.is_array,
-            )
-        )
-    if spec.choices is not None:
-        checks.append(SubsetOf(spec.choices) if param_type.is_array else OneOf(spec.choices))
-    checks.extend(build_validator(rule, argument, spec.type) for rule, argument in spec.validators)
-    checks.extend(extra_checks)
+    checks, constraints_text = checks_and_texts(spec, extra_checks)
     return CompiledParam(
         spec=spec,
-        type=param_type,
+        type=TYPES[spec.type],
         attribute_path=attribute_parts(spec.name),
-        checks=tuple(checks),
+        checks=checks,
+        constraints_text=constraints_text,
+        descriptor_description=description_text(spec.description, spec.unit),
     )
 
 
@@ -254,6 +321,11 @@ class CompiledSchema:
 
 
 def compile_rules(spec: SchemaSpec) -> tuple[CompiledRule, ...]:
+    if not spec.rules:
+        return ()
+    # The expression language loads with the first class that has rules.
+    from genparams.runtime.core.rules import RuleError, compile_rule
+
     types = {p.name: p.type for p in spec.parameters if ENTRY_KEY not in p.name.split(".")}
     compiled = []
     for rule in spec.rules:
@@ -334,4 +406,9 @@ def _compile(spec: SchemaSpec) -> CompiledSchema:
         (templates if is_template else parameters)[param_spec.name] = compiled
         aliases.update(dict.fromkeys(param_spec.aliases, param_spec.name))
     rules = compile_rules(spec)
-    return CompiledSchema(spec, parameters, templates, aliases, rules, rules_by_parameter(rules))
+    by_parameter: dict[str, tuple[CompiledRule, ...]] = {}
+    if rules:
+        from genparams.runtime.core.rules import rules_by_parameter
+
+        by_parameter = rules_by_parameter(rules)
+    return CompiledSchema(spec, parameters, templates, aliases, rules, by_parameter)

@@ -11,10 +11,10 @@ each value carries its own type, one of the nine, which a set may change.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 from typing import Any, ClassVar, TypeAlias
 
 from genparams.runtime.core.errors import GenparamsError
+from genparams.runtime.core.records import Record, store
 
 RosValue: TypeAlias = (
     bool
@@ -37,8 +37,9 @@ class ValueTypeError(GenparamsError, ValueError):
     """A value does not have the parameter's type."""
 
 
-@dataclass(frozen=True, slots=True)
-class ParamType:
+class ParamType(Record):
+    _fields = ("name", "ros_type", "ros_type_name", "annotation", "element", "json_type")
+    __slots__ = (*_fields, "is_array", "ready")
     name: str  # schema spelling, e.g. "double_array"
     ros_type: int  # rcl_interfaces/msg/ParameterType constant
     ros_type_name: str  # e.g. "PARAMETER_DOUBLE_ARRAY"
@@ -48,12 +49,26 @@ class ParamType:
     is_dynamic: ClassVar[bool] = False  # ``any``: the type is the value's own (dynamic_typing)
     # Read on every set, so stored rather than computed: whether values are arrays, and
     # the one Python type whose values ROS hands over already in typed-view form.
-    is_array: bool = field(init=False, repr=False, compare=False)
-    ready: type | None = field(init=False, repr=False, compare=False)
+    is_array: bool
+    ready: type | None
 
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "is_array", self.element is not None)
-        object.__setattr__(self, "ready", _READY.get(self.name))
+    def __init__(
+        self,
+        name: str,
+        ros_type: int,
+        ros_type_name: str,
+        annotation: str,
+        element: str | None,
+        json_type: str,
+    ) -> None:
+        store(self, "name", name)
+        store(self, "ros_type", ros_type)
+        store(self, "ros_type_name", ros_type_name)
+        store(self, "annotation", annotation)
+        store(self, "element", element)
+        store(self, "json_type", json_type)
+        store(self, "is_array", element is not None)
+        store(self, "ready", _READY.get(name))
 
     def of_value(self, value: Any) -> ParamType:
         """The type a typed-view value has under this parameter type: its own for ``any``."""

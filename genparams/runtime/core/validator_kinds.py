@@ -10,13 +10,11 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Callable
-from dataclasses import dataclass
 from typing import Any
-
-import regex as regex_engine
 
 from genparams.runtime.core.errors import GenparamsError
 from genparams.runtime.core.pattern_cost import PatternCostError
+from genparams.runtime.core.records import Record, store
 from genparams.runtime.core.types import INT64_MAX, INT64_MIN
 from genparams.runtime.core.validators import (
     ALL_TYPES,
@@ -38,14 +36,27 @@ from genparams.runtime.core.validators import (
 )
 
 
-@dataclass(frozen=True)
-class ValidatorKind:
+class ValidatorKind(Record):
     """How one validator is spelled in a schema, what it applies to, how it is built."""
 
+    _fields = ("name", "applies_to", "build", "takes_argument")
+    __slots__ = _fields
     name: str
     applies_to: frozenset[str]
     build: Callable[[Any, str], Validator]  # (argument, parameter type) -> validator
-    takes_argument: bool = True
+    takes_argument: bool
+
+    def __init__(
+        self,
+        name: str,
+        applies_to: frozenset[str],
+        build: Callable[[Any, str], Validator],
+        takes_argument: bool = True,
+    ) -> None:
+        store(self, "name", name)
+        store(self, "applies_to", applies_to)
+        store(self, "build", build)
+        store(self, "takes_argument", takes_argument)
 
 
 class ValidatorArgumentError(GenparamsError, ValueError):
@@ -119,11 +130,13 @@ def _length(arg: Any, _type: str) -> Length:
 def _pattern(arg: Any, _type: str) -> Pattern:
     if not isinstance(arg, str):
         raise ValidatorArgumentError(f"pattern must be a string, got {fmt(arg)}")
+    import regex as engine  # on first use, as Pattern imports it
+
     try:
         return Pattern(arg)
     except PatternCostError as exc:
         raise ValidatorArgumentError(str(exc)) from None
-    except (re.error, regex_engine.error) as exc:
+    except (re.error, engine.error) as exc:
         raise ValidatorArgumentError(f"pattern {arg!r} is not a valid regex: {exc}") from None
 
 

@@ -15,10 +15,12 @@ import operator
 import re
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
-from typing import Any, Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
-import regex as regex_engine
+from genparams.runtime.core.records import Record, store
+
+if TYPE_CHECKING:
+    import regex as regex_engine
 
 from genparams.runtime.core.pattern_cost import check_pattern_cost
 
@@ -54,16 +56,19 @@ def fmt(value: Any) -> str:
     return text if len(text) <= 60 else text[:57] + "..."
 
 
-@dataclass(frozen=True, slots=True)
-class Compare:
+class Compare(Record):
     """``gt``, ``ge``, ``lt``, ``le`` against a number."""
 
+    __slots__ = ("holds", "limit", "rule")
+    _fields = ("rule", "limit")
     rule: str
     limit: float
-    holds: Callable[[Any, Any], bool] = field(init=False, repr=False, compare=False)
+    holds: Callable[[Any, Any], bool]
 
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "holds", _COMPARISONS[self.rule][1])
+    def __init__(self, rule: str, limit: float) -> None:
+        store(self, "rule", rule)
+        store(self, "limit", limit)
+        store(self, "holds", _COMPARISONS[rule][1])
 
     def __call__(self, value: Any) -> str | None:
         if self.holds(value, self.limit):  # NaN compares false, so it is rejected
@@ -75,15 +80,30 @@ class Compare:
         return f"must be {_COMPARISONS[self.rule][0]} {self.limit!r}"
 
 
-@dataclass(frozen=True, slots=True)
-class Bounds:
+class Bounds(Record):
     """Inclusive bounds; with ``each``, applied to every element of an array."""
 
+    _fields = ("low", "high", "each", "rule", "nan_passes")
+    __slots__ = _fields
     low: float
     high: float
-    each: bool = False
-    rule: str = "bounds"
-    nan_passes: bool = False  # generate_parameter_library's element bounds let NaN items pass
+    each: bool
+    rule: str
+    nan_passes: bool  # generate_parameter_library's element bounds let NaN items pass
+
+    def __init__(
+        self,
+        low: float,
+        high: float,
+        each: bool = False,
+        rule: str = "bounds",
+        nan_passes: bool = False,
+    ) -> None:
+        store(self, "low", low)
+        store(self, "high", high)
+        store(self, "each", each)
+        store(self, "rule", rule)
+        store(self, "nan_passes", nan_passes)
 
     def _check_one(self, value: Any) -> bool:
         if self.nan_passes and isinstance(value, float) and math.isnan(value):
@@ -107,19 +127,36 @@ class Bounds:
         return f"{text} or NaN" if self.nan_passes else text
 
 
-@dataclass(frozen=True, slots=True)
-class RosRange:
+class RosRange(Record):
     """The ``range:`` key, with exactly the semantics rclpy applies to descriptor ranges.
 
     For arrays it applies to every element (ROS itself has no array ranges).
     """
 
+    _fields = ("low", "high", "step", "integer", "each", "rule")
+    __slots__ = _fields
     low: float
     high: float
     step: float
     integer: bool
-    each: bool = False
-    rule: str = "range"
+    each: bool
+    rule: str
+
+    def __init__(
+        self,
+        low: float,
+        high: float,
+        step: float,
+        integer: bool,
+        each: bool = False,
+        rule: str = "range",
+    ) -> None:
+        store(self, "low", low)
+        store(self, "high", high)
+        store(self, "step", step)
+        store(self, "integer", integer)
+        store(self, "each", each)
+        store(self, "rule", rule)
 
     def _problem(self, value: Any) -> str | None:
         if self.integer:
@@ -166,10 +203,15 @@ class RosRange:
         return ("every item " if self.each else "") + text
 
 
-@dataclass(frozen=True, slots=True)
-class OneOf:
+class OneOf(Record):
+    _fields = ("choices", "rule")
+    __slots__ = _fields
     choices: tuple[Any, ...]
-    rule: str = "one_of"
+    rule: str
+
+    def __init__(self, choices: tuple[Any, ...], rule: str = "one_of") -> None:
+        store(self, "choices", choices)
+        store(self, "rule", rule)
 
     def __call__(self, value: Any) -> str | None:
         if value in self.choices:
@@ -180,10 +222,15 @@ class OneOf:
         return "one of " + ", ".join(fmt(c) for c in self.choices)
 
 
-@dataclass(frozen=True, slots=True)
-class SubsetOf:
+class SubsetOf(Record):
+    _fields = ("choices", "rule")
+    __slots__ = _fields
     choices: tuple[Any, ...]
-    rule: str = "subset_of"
+    rule: str
+
+    def __init__(self, choices: tuple[Any, ...], rule: str = "subset_of") -> None:
+        store(self, "choices", choices)
+        store(self, "rule", rule)
 
     def __call__(self, value: Any) -> str | None:
         for index, item in enumerate(value):
@@ -198,9 +245,13 @@ class SubsetOf:
         return "every item one of " + ", ".join(fmt(c) for c in self.choices)
 
 
-@dataclass(frozen=True, slots=True)
-class NotEmpty:
-    rule: str = "not_empty"
+class NotEmpty(Record):
+    _fields = ("rule",)
+    __slots__ = _fields
+    rule: str
+
+    def __init__(self, rule: str = "not_empty") -> None:
+        store(self, "rule", rule)
 
     def __call__(self, value: Any) -> str | None:
         return None if len(value) else f"must not be empty ({self.rule})"
@@ -209,9 +260,13 @@ class NotEmpty:
         return "not empty"
 
 
-@dataclass(frozen=True, slots=True)
-class Unique:
-    rule: str = "unique"
+class Unique(Record):
+    _fields = ("rule",)
+    __slots__ = _fields
+    rule: str
+
+    def __init__(self, rule: str = "unique") -> None:
+        store(self, "rule", rule)
 
     def __call__(self, value: Any) -> str | None:
         seen: set[Any] = set()
@@ -225,11 +280,19 @@ class Unique:
         return "no repeated items"
 
 
-@dataclass(frozen=True, slots=True)
-class Length:
-    min: int | None = None
-    max: int | None = None
-    rule: str = "length"
+class Length(Record):
+    _fields = ("min", "max", "rule")
+    __slots__ = _fields
+    min: int | None
+    max: int | None
+    rule: str
+
+    def __init__(
+        self, min: int | None = None, max: int | None = None, rule: str = "length"
+    ) -> None:
+        store(self, "min", min)
+        store(self, "max", max)
+        store(self, "rule", rule)
 
     def __call__(self, value: Any) -> str | None:
         size = len(value)
@@ -257,20 +320,23 @@ class Length:
 PATTERN_TIMEOUT_S = 0.05
 
 
-@dataclass(frozen=True, slots=True)
-class Pattern:
+class Pattern(Record):
     """Python ``re`` syntax, matched by the ``regex`` module (its V0 mode) with a time limit."""
 
+    __slots__ = ("_compiled", "regex", "rule")
+    _fields = ("regex", "rule")
     regex: str
-    rule: str = "pattern"
-    _compiled: regex_engine.Pattern[str] = field(init=False, repr=False, compare=False)
+    rule: str
+    _compiled: regex_engine.Pattern[str]
 
-    def __post_init__(self) -> None:
-        check_pattern_cost(self.regex)  # before any engine expands its counted repeats
-        re.compile(self.regex)  # the syntax users write, with re's error messages
-        object.__setattr__(
-            self, "_compiled", regex_engine.compile(self.regex, flags=regex_engine.V0)
-        )
+    def __init__(self, regex: str, rule: str = "pattern") -> None:
+        check_pattern_cost(regex)  # before any engine expands its counted repeats
+        re.compile(regex)  # the syntax users write, with re's error messages
+        import regex as engine  # on first use: importing it costs a process ~10 ms
+
+        store(self, "regex", regex)
+        store(self, "rule", rule)
+        store(self, "_compiled", engine.compile(regex, flags=engine.V0))
 
     def __call__(self, value: Any) -> str | None:
         items = (value,) if isinstance(value, str) else value
@@ -297,8 +363,7 @@ class Pattern:
         return f"matches {self.regex!r}"
 
 
-@dataclass(frozen=True, slots=True)
-class Custom:
+class Custom(Record):
     """A user function ``module:function`` taking the value then ``args``: None (or ``""``,
     as generate_parameter_library's Python validators return) or a reason.
 
@@ -306,9 +371,16 @@ class Custom:
     limits (``{custom: {function: 'pkg.checks:at_least_or_nan', args: [0.0]}}``).
     """
 
+    _fields = ("target", "args", "rule")
+    __slots__ = _fields
     target: str
-    args: tuple[Any, ...] = ()
-    rule: str = "custom"
+    args: tuple[Any, ...]
+    rule: str
+
+    def __init__(self, target: str, args: tuple[Any, ...] = (), rule: str = "custom") -> None:
+        store(self, "target", target)
+        store(self, "args", args)
+        store(self, "rule", rule)
 
     def resolve(self) -> Callable[..., Any]:
         module_name, _, function_name = self.target.partition(":")

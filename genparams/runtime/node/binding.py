@@ -13,7 +13,7 @@ import functools
 import threading
 import traceback
 from collections.abc import Callable, Mapping, Sequence
-from typing import Any, Generic, TypeVar
+from typing import TYPE_CHECKING, Any, Generic, TypeVar
 
 from rclpy.node import Node
 from rclpy.parameter import Parameter
@@ -39,8 +39,10 @@ from genparams.runtime.node.consistency import NodeSets, node_sets
 from genparams.runtime.node.declaring import declare_batch, descriptor_for, ros_parameter
 from genparams.runtime.node.deprecation import DeprecationWatch, Notices, report_overrides
 from genparams.runtime.node.lifecycle import mutability_problem
-from genparams.runtime.node.mapped import EntryOwner, EntryPlan, MappedEntries
 from genparams.runtime.node.overrides import OverrideReader
+
+if TYPE_CHECKING:
+    from genparams.runtime.node.mapped import EntryPlan, MappedEntries
 
 P = TypeVar("P", bound=ParamsView)
 _EXTRA = ("_binding",)  # the root's slot that is no field
@@ -135,6 +137,7 @@ class Binding(Generic[P]):
                 for name, p in parameters.items()
             ]
             + aliases.declarations(owned, by_full_name),
+            spec.name,
         )
         given = [name for name in reader.given if name in parameters]  # conditions that hold
         report_overrides(notices, parameters, given, reader.renamed, full)
@@ -155,10 +158,13 @@ class Binding(Generic[P]):
         if any(param.type.is_array for param in every):
             sets.retype_empty_arrays(collections.ChainMap(binding.owned, binding.old_names))
         # Mapped groups, old names and deprecations each watch the node on their own.
-        entry_owner = EntryOwner(node, prefix, binding.owned, sets.check)
-        binding.mapped = MappedEntries.attach(entry_owner, compiled, parameters, notices)
-        if binding.mapped is not None:
-            sets.explain_undeclared_entries()
+        if compiled.maps:  # loaded only by classes that have mapped groups
+            from genparams.runtime.node.mapped import EntryOwner, MappedEntries
+
+            entry_owner = EntryOwner(node, prefix, binding.owned, sets.check)
+            binding.mapped = MappedEntries.attach(entry_owner, compiled, parameters, notices)
+            if binding.mapped is not None:
+                sets.explain_undeclared_entries()
         if compiled.aliases:
             binding.aliases = aliases
             sets.add_renames(aliases.mirrored)

@@ -11,9 +11,12 @@ from rcl_interfaces.msg import (
     ParameterDescriptor,
     SetParametersResult,
 )
+from rclpy.exceptions import InvalidParameterValueException
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 
+from genparams.runtime.core.errors import ParameterDeclarationError
+from genparams.runtime.core.problems import ParameterProblem
 from genparams.runtime.core.rules import CompiledRule
 from genparams.runtime.core.spec import CompiledParam
 from genparams.runtime.node import rclpy_internals as internals
@@ -77,14 +80,67 @@ def ros_parameter(param: CompiledParam, full_name: str, value: Any) -> Parameter
 Declaration = tuple[Parameter, ParameterDescriptor]
 
 
-def declare_batch(node: Node, declarations: Sequence[Declaration]) -> None:
-    """Declare parameters with their descriptors, one on-set and post-set round each.
+DECLARE_ROUND = 256
+"""Parameters declared per atomic round of rclpy's set path (one on-set, post-set and
+ParameterEvent each): a bounded number of rounds, and no round so large that a user's
+on-set callback walks thousands of parameters at once."""
+
+
+class DeclarationRefusedError(ParameterDeclarationError, InvalidParameterValueException):
+    """A round of a class's declaration was refused (an on-set callback, or rclpy's own
+    descriptor check); every parameter of the class declared before it is undeclared again.
+
+    An InvalidParameterValueException, as rclpy raises when a declaration is refused,
+    so code that handles rclpy's refusal handles this one.
+    """
+
+    def __init__(self, schema: str, node: str, problems: Sequence[ParameterProblem]) -> None:
+        ParameterDeclarationError.__init__(self, schema, node, problems)
+
+
+def declare_batch(
+    node: Node, declarations: Sequence[Declaration], schema: str = "", size: int = DECLARE_ROUND
+) -> None:
+    """Declare parameters with their descriptors in atomic rounds of at most ``size``:
+    all or nothing. When a round is refused or raises, every parameter the earlier rounds
+    declared is undeclared again (and announced deleted) before the error propagates.
 
     Node.declare_parameters infers the type from the value, which turns an
     empty list into BYTE_ARRAY; this path keeps the declared type.
     """
-    parameters = [parameter for parameter, _ in declarations]
-    internals.declare_with_descriptors(node, parameters, {p.name: d for p, d in declarations})
+    attempted: list[str] = []
+    try:
+        for start in range(0, len(declarations), size):
+            round_ = declarations[start : start + size]
+            parameters = [parameter for parameter, _ in round_]
+            attempted.extend(parameter.name for parameter in parameters)
+            descriptors = {parameter.name: descriptor for parameter, descriptor in round_}
+            result = internals.declare_with_descriptors(node, parameters, descriptors)
+            if not result.successful:
+                raise DeclarationRefusedError(
+                    schema,
+                    node.get_fully_qualified_name(),
+                    [_refusal(node, round_, result.reason)],
+                )
+    except BaseException:
+        internals.forget_declared(node, attempted)
+        raise
+
+
+def _refusal(node: Node, round_: Sequence[Declaration], reason: str) -> ParameterProblem:
+    """What refused a round: the parameter rclpy's descriptor check refuses, else the round
+    (an on-set callback refuses a whole request, naming no parameter)."""
+    for parameter, descriptor in round_:
+        if not internals.descriptor_check(node, parameter, descriptor, False).successful:
+            return ParameterProblem(parameter.name, reason)
+    if len(round_) == 1:
+        return ParameterProblem(round_[0][0].name, f"refused by an on-set callback: {reason}")
+    first, last = round_[0][0].name, round_[-1][0].name
+    return ParameterProblem(
+        "",
+        f"an on-set callback refused the round declaring {len(round_)} parameters "
+        f"({first} to {last}): {reason}",
+    )
 
 
 def replace_batch(

@@ -14,8 +14,8 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from typing import TYPE_CHECKING, Any
 
+from genparams.runtime.core.param_checks import CONFIGURE_ONLY_TEXT
 from genparams.runtime.core.problems import ParameterProblem
-from genparams.runtime.core.spec import CONFIGURE_ONLY_TEXT
 from genparams.runtime.node.rclpy_internals import lifecycle_state
 
 if TYPE_CHECKING:

@@ -25,7 +25,11 @@ Behaviours relied on (rclpy 7.1, ``rclpy/node.py``):
   checks each value against first (``_apply_descriptor``), refusing at the first
   value that fails.
 - ``Node.undeclare_parameter`` deletes from ``_parameters`` and ``_descriptors``
-  without calling any callback.
+  without calling any callback (and refuses a read-only parameter).
+- ``Node._parameter_event_publisher`` publishes the node's ParameterEvents.
+- ``Node._declare_parameter_common`` runs one whole set round per parameter;
+  ``_set_parameters_atomically_common(parameters, descriptors,
+  allow_not_set_type=True)`` is that same round for many parameters at once.
 - ``Node._parameter_overrides``: the values a node was started with.
 - ``Node._check_undeclared_parameters(parameter_list)`` refuses a set naming
   undeclared parameters; it reads ``_parameters`` and
@@ -42,7 +46,7 @@ from collections.abc import Callable, Collection, Mapping, Sequence
 from types import SimpleNamespace
 from typing import Any
 
-from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
+from rcl_interfaces.msg import ParameterDescriptor, ParameterEvent, SetParametersResult
 from rclpy.exceptions import ParameterNotDeclaredException
 from rclpy.node import Node
 from rclpy.parameter import Parameter
@@ -92,10 +96,29 @@ def replace_undeclare(node: Node, wrapper: Callable[[str], None]) -> Callable[[s
 
 def declare_with_descriptors(
     node: Node, parameters: Sequence[Parameter], descriptors: Mapping[str, ParameterDescriptor]
-) -> None:
-    """Declare with exact types: Node.declare_parameters infers the type from the value
-    (an empty list becomes BYTE_ARRAY); this path keeps the declared one."""
-    node._declare_parameter_common(list(parameters), dict(descriptors))
+) -> SetParametersResult:
+    """Declare new parameters with exact types in one atomic round of the common set path:
+    rclpy's ``_declare_parameter_common`` runs this same round once per parameter, and
+    ``Node.declare_parameters`` infers the type from the value (an empty list becomes
+    BYTE_ARRAY); this path keeps the declared one. The round's result, not an exception."""
+    return set_path(node)(list(parameters), dict(descriptors), True)
+
+
+def forget_declared(node: Node, names: Collection[str]) -> None:
+    """Undeclare ``names`` as ``Node.undeclare_parameter`` does (no callback runs; read-only
+    ones too, which that refuses), and announce them deleted in one ParameterEvent, as the
+    set path announces a parameter it undeclares. Names the node does not hold are skipped."""
+    stored, descriptors = node._parameters, node._descriptors
+    event = ParameterEvent(node=node.get_fully_qualified_name())
+    for name in names:
+        parameter = stored.pop(name, None)
+        descriptors.pop(name, None)
+        if parameter is not None:
+            event.deleted_parameters.append(parameter.to_parameter_msg())
+    publisher = node._parameter_event_publisher
+    if event.deleted_parameters and publisher is not None:
+        event.stamp = node.get_clock().now().to_msg()
+        publisher.publish(event)
 
 
 def set_with_descriptors(
@@ -128,7 +151,7 @@ def first_descriptor_refusal(node: Node, parameters: Sequence[Parameter]) -> str
 
 
 def descriptor_check(
-    node: Node, parameter: Parameter, descriptor: ParameterDescriptor
+    node: Node, parameter: Parameter, descriptor: ParameterDescriptor, read_only: bool = True
 ) -> SetParametersResult:
     """rclpy's own verdict on setting ``parameter`` under ``descriptor``, without setting it.
 

@@ -16,16 +16,17 @@ travels as ``{"$float": "nan"}``, never as a token a strict reader refuses.
 from __future__ import annotations
 
 import hashlib
+import importlib.util
+import os
+import sys
 import threading
 import weakref
 from collections.abc import Mapping
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from genparams._version import __version__
-from genparams.runtime.core.json_codec import dumps
 from genparams.runtime.core.naming import ENTRY_KEY, join_prefix
-from genparams.runtime.core.schema_message import FORMAT_VERSION
+from genparams.runtime.core.records import Record, store
 from genparams.runtime.core.spec import CompiledParam, CompiledSchema
 
 if TYPE_CHECKING:
@@ -118,6 +119,8 @@ def describe_class(compiled: CompiledSchema, prefix: str) -> dict[str, Any]:
 
 def schema_hash(body: Mapping[str, Any]) -> str:
     """A stable digest of a description: equal schemas under equal prefixes hash equal."""
+    from genparams.runtime.core.json_codec import dumps  # with the first message
+
     return text_hash(dumps(body, sort_keys=True, separators=(",", ":")))
 
 
@@ -125,12 +128,17 @@ def text_hash(text: str) -> str:
     return hashlib.sha256(text.encode("utf-8")).hexdigest()[:16]
 
 
-@dataclass(frozen=True)
-class ClassText:
+class ClassText(Record):
     """A class's description as JSON text, and its hash."""
 
+    _fields = ("text", "hash")
+    __slots__ = _fields
     text: str
     hash: str
+
+    def __init__(self, text: str, hash: str) -> None:
+        store(self, "text", text)
+        store(self, "hash", hash)
 
 
 # Every node that declares a class under a prefix publishes the same description:
@@ -143,6 +151,8 @@ def class_text(compiled: CompiledSchema, prefix: str) -> ClassText:
     key = (id(compiled), prefix)
     cached = _CLASS_TEXTS.get(key)
     if cached is None or cached[0] is not compiled:
+        from genparams.runtime.core.json_codec import dumps
+
         body = describe_class(compiled, prefix)
         cached = (compiled, ClassText(dumps(body, sort_keys=True), body["hash"]))
         _CLASS_TEXTS[key] = cached
@@ -151,6 +161,9 @@ def class_text(compiled: CompiledSchema, prefix: str) -> ClassText:
 
 def node_message_text(node_name: str, classes: list[ClassText]) -> str:
     """The node's message: the JSON of node_message, assembled from cached class texts."""
+    from genparams.runtime.core.json_codec import dumps
+    from genparams.runtime.core.schema_message import FORMAT_VERSION
+
     node_hash = schema_hash({"classes": [c.hash for c in classes]})
     head = {"format": FORMAT_VERSION, "genparams": __version__, "hash": node_hash}
     # Keys in sorted order, as json.dumps(sort_keys=True) would write them.
@@ -163,25 +176,83 @@ def node_message_text(node_name: str, classes: list[ClassText]) -> str:
     )
 
 
+def string_message_type() -> Any:
+    """std_msgs/msg/String, loading nothing else of std_msgs when it can.
+
+    ``std_msgs.msg`` imports all of its thirty message modules (5-10 ms of a
+    process); the schema topic needs one. rosidl_generator_py writes each message
+    to ``<package>/msg/_<name>.py``, so that file is loaded alone, under the name
+    ``std_msgs.msg`` itself imports it by: a later ``import std_msgs.msg`` finds
+    it there and hands out the very same class. Anything unexpected (the package
+    imported already, another layout) takes the ordinary import.
+    """
+    name = "std_msgs.msg._string"
+    loaded = sys.modules.get("std_msgs.msg")
+    if loaded is None and name not in sys.modules:
+        try:
+            package = importlib.util.find_spec("std_msgs")
+            folders = package.submodule_search_locations if package is not None else None
+            path = os.path.join(next(iter(folders or ())), "msg", "_string.py")
+            spec = importlib.util.spec_from_file_location(name, path)
+            if spec is not None and spec.loader is not None and os.path.isfile(path):
+                module = importlib.util.module_from_spec(spec)
+                sys.modules[name] = module
+                try:
+                    spec.loader.exec_module(module)
+                except BaseException:
+                    del sys.modules[name]
+                    raise
+        except (ImportError, OSError, StopIteration):
+            pass
+    found = sys.modules.get(name)
+    if found is not None and hasattr(found, "String"):
+        return found.String
+    from std_msgs.msg import String
+
+    return String
+
+
 class SchemaPublisher:
-    """The one latched publisher of a node, holding every class declared there."""
+    """The one latched publisher of a node, holding every class declared there.
+
+    The publisher exists from the first declare, so the topic is discoverable at
+    once; the message is built and published when a subscriber first matches it
+    (a tuning page, ``genparams audit``, ``ros2 topic echo``, a bag recorder), and
+    again at every later declare. A node nobody asks never builds its description
+    nor keeps a copy of it in the DDS writer's history. The matched event is
+    delivered by the node's executor, as its parameter services are; on a
+    middleware without matched events the message is published at once.
+    """
 
     def __init__(self, node: Node) -> None:
+        from rclpy.event_handler import PublisherEventCallbacks, UnsupportedEventTypeError
         from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
-        from std_msgs.msg import String
+
+        String = string_message_type()  # noqa: N806 (a class)
 
         # The node's name, not the node: the registry below is keyed weakly by the node,
         # and a value holding its key would keep every node ever declared alive.
         self.node_name = node.get_fully_qualified_name()
-        self.classes: dict[tuple[str, str], ClassText] = {}
+        self.classes: dict[tuple[str, str], tuple[CompiledSchema, str]] = {}
         self.message_type = String
+        self.lock = threading.Lock()
+        self.requested = False  # a subscriber matched once: publish every change at once
         qos = QoSProfile(
             depth=1,
             history=HistoryPolicy.KEEP_LAST,
             reliability=ReliabilityPolicy.RELIABLE,
             durability=DurabilityPolicy.TRANSIENT_LOCAL,
         )
-        self.publisher: Publisher = node.create_publisher(String, SCHEMA_TOPIC, qos)
+        try:
+            self.publisher: Publisher = node.create_publisher(
+                String,
+                SCHEMA_TOPIC,
+                qos,
+                event_callbacks=PublisherEventCallbacks(matched=self.matched),
+            )
+        except UnsupportedEventTypeError:
+            self.requested = True
+            self.publisher = node.create_publisher(String, SCHEMA_TOPIC, qos)
 
     @classmethod
     def of(cls, node: Node) -> SchemaPublisher:
@@ -192,11 +263,21 @@ class SchemaPublisher:
             return found
 
     def add(self, compiled: CompiledSchema, prefix: str) -> None:
-        self.classes[(prefix, compiled.spec.name)] = class_text(compiled, prefix)
-        self.publish()
+        with self.lock:
+            self.classes[(prefix, compiled.spec.name)] = (compiled, prefix)
+            if self.requested or self.publisher.get_subscription_count() > 0:
+                self.requested = True
+                self.publish()
+
+    def matched(self, status: Any) -> None:
+        """The publisher's matched event: the first subscriber asks for the message."""
+        with self.lock:
+            if not self.requested and status.current_count > 0:
+                self.requested = True
+                self.publish()
 
     def message_text(self) -> str:
-        ordered = [self.classes[key] for key in sorted(self.classes)]
+        ordered = [class_text(*self.classes[key]) for key in sorted(self.classes)]
         return node_message_text(self.node_name, ordered)
 
     def publish(self) -> None:
@@ -210,5 +291,5 @@ _GUARD = threading.Lock()
 
 
 def publish_schema(node: Node, compiled: CompiledSchema, prefix: str) -> None:
-    """Add a declared class to its node's schema message and republish it."""
+    """Add a declared class to its node's schema message; republish it once asked for."""
     SchemaPublisher.of(node).add(compiled, prefix)
