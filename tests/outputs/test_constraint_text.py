@@ -23,7 +23,7 @@ from genparams.outputs.render import python_literal
 from genparams.runtime.core.spec import CompiledParam, compile_schema
 from genparams.runtime.core.types import TYPES
 from genparams.runtime.core.validators import RosRange
-from genparams.runtime.node.declaring import descriptor_for
+from genparams.runtime.node.declaring import descriptor_for, rule_text
 from genparams.schema.model import Parameter, Schema
 from tests.golden import OutputCase, all_output_cases, case_dirs, case_schema, runtime_cases
 from tests.readback import params_class
@@ -117,5 +117,9 @@ def test_a_real_node_describes_the_same_constraints(ros: RosHarness, case: Path)
     declared = [p for p in schema.parameters if node.has_parameter(p.ros_name)]
     assert len(declared) >= len(schema.parameters) - sum(bool(p.when) for p in schema.parameters)
     descriptors = ros.client(node).describe(*(p.ros_name for p in declared))
+    # A node's descriptor also states the rules that read the parameter, after its own.
+    reading = compile_schema(cls._SPEC).rules_by_parameter
     for parameter, descriptor in zip(declared, descriptors, strict=True):
-        assert _descriptor_text(descriptor) == _text(parameter), parameter.ros_name
+        rules = [rule_text(rule) for rule in reading.get(parameter.ros_name, ())]
+        expected = "; ".join(filter(None, [_text(parameter), *rules]))
+        assert _descriptor_text(descriptor) == expected, parameter.ros_name
