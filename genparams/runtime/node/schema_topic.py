@@ -31,11 +31,25 @@ from genparams.runtime.core.spec import CompiledParam, CompiledSchema
 if TYPE_CHECKING:
     from rclpy.node import Node
     from rclpy.publisher import Publisher
+    from rclpy.qos import QoSProfile
 
 SCHEMA_TOPIC = "~/genparams/schema"
 """Relative to the node: ``/ns/camera`` publishes on ``/ns/camera/genparams/schema``."""
 
 SCHEMA_TOPIC_SUFFIX = "/genparams/schema"
+
+
+def schema_qos() -> QoSProfile:
+    """The schema topic's QoS, for its publisher and every reader: the last message, kept
+    for late subscribers (transient local)."""
+    from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
+
+    return QoSProfile(
+        depth=1,
+        history=HistoryPolicy.KEEP_LAST,
+        reliability=ReliabilityPolicy.RELIABLE,
+        durability=DurabilityPolicy.TRANSIENT_LOCAL,
+    )
 
 
 def json_value(value: Any) -> Any:
@@ -167,7 +181,6 @@ class SchemaPublisher:
     """The one latched publisher of a node, holding every class declared there."""
 
     def __init__(self, node: Node) -> None:
-        from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
         from std_msgs.msg import String
 
         # The node's name, not the node: the registry below is keyed weakly by the node,
@@ -175,13 +188,7 @@ class SchemaPublisher:
         self.node_name = node.get_fully_qualified_name()
         self.classes: dict[tuple[str, str], ClassText] = {}
         self.message_type = String
-        qos = QoSProfile(
-            depth=1,
-            history=HistoryPolicy.KEEP_LAST,
-            reliability=ReliabilityPolicy.RELIABLE,
-            durability=DurabilityPolicy.TRANSIENT_LOCAL,
-        )
-        self.publisher: Publisher = node.create_publisher(String, SCHEMA_TOPIC, qos)
+        self.publisher: Publisher = node.create_publisher(String, SCHEMA_TOPIC, schema_qos())
 
     @classmethod
     def of(cls, node: Node) -> SchemaPublisher:
