@@ -8,6 +8,7 @@ from pathlib import Path
 from genparams.api import load_schema
 from genparams.errors import CommandError
 from genparams.integration.writing import write_all
+from genparams.runtime.core.naming import absolute, node_name_problem
 from genparams.runtime.core.visible import visible
 from genparams.schema.errors import SchemaError
 from genparams.schema.model import Schema
@@ -28,6 +29,16 @@ def report(*lines: object) -> None:
     ``CommandError`` instead, and ``genparams.cli.main`` reports them here."""
     for line in lines:
         print(visible(str(line)), file=sys.stderr)
+
+
+def node_arguments(command: str, nodes: list[str], what: str = "node") -> tuple[str, ...]:
+    """The node names given on the command line, each made absolute; a ``CommandError``
+    (exit 2) naming the first that is not a node name, and why."""
+    for node in nodes:
+        problem = node_name_problem(node)
+        if problem is not None:
+            raise CommandError(f"genparams {command}: invalid {what} {node!r}: {problem}")
+    return tuple(absolute(node) for node in nodes)
 
 
 def emit(text: str, output: Path | None) -> None:

@@ -7,11 +7,11 @@ import sys
 from pathlib import Path
 
 from genparams.audit.findings import KINDS
+from genparams.commands._common import node_arguments
 from genparams.commands._launch import add_launch_arguments
 from genparams.errors import CommandError
 from genparams.paramsfile.node_rules import NodeRule
 from genparams.paramsfile.params_reader import ParamsDocument
-from genparams.paramsfile.ros_yaml import absolute, node_name_problem
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -102,10 +102,7 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 
 
 def run(args: argparse.Namespace) -> int:
-    for node in args.nodes:
-        problem = node_name_problem(absolute(node))
-        if problem is not None:
-            raise CommandError(f"genparams audit: invalid node {node!r}: {problem}")
+    only = node_arguments("audit", args.nodes)
     from genparams.audit.deployment import DeploymentError, read_deployment
     from genparams.audit.report import json_report, text_report
     from genparams.audit.walk import audit
@@ -122,7 +119,6 @@ def run(args: argparse.Namespace) -> int:
     rules = _rules(args.manifest)
     graph = Graph("genparams_audit")
     try:
-        only = tuple(absolute(n) for n in args.nodes)
         result = audit(
             graph,
             documents,

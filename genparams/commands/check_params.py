@@ -5,11 +5,11 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from genparams.commands._common import node_arguments
 from genparams.commands._schemas import add_schema_arguments, bound_spec, load_bounds
 from genparams.errors import CommandError
 from genparams.paramsfile.check_params import check_files
 from genparams.paramsfile.params_reader import read_params_file
-from genparams.paramsfile.ros_yaml import absolute, node_name_problem
 from genparams.schema.errors import SchemaError
 from genparams.schema.input_file import read_input_file
 
@@ -50,10 +50,7 @@ def add_known_argument(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    for node in args.node:
-        problem = node_name_problem(node)
-        if problem is not None:
-            raise CommandError(f"genparams check-params: invalid --node {node!r}: {problem}")
+    nodes = list(node_arguments("check-params", args.node, "--node"))
     bounds = load_bounds([args.schema, *args.also])
     code = 0
     unreadable: list[SchemaError] = []  # the other files are still checked
@@ -64,7 +61,7 @@ def run(args: argparse.Namespace) -> int:
             unreadable.append(exc)
             continue
         document = read_params_file(text, str(params))
-        report = check_files(bounds, [document], [absolute(n) for n in args.node], args.known)
+        report = check_files(bounds, [document], nodes, args.known)
         for line in (*report.problems, *report.warnings):
             print(line)
         if args.verbose:

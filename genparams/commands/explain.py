@@ -6,7 +6,7 @@ import argparse
 from pathlib import Path
 from typing import Any
 
-from genparams.commands._common import emit
+from genparams.commands._common import emit, node_arguments
 from genparams.commands._launch import add_launch_arguments, launched_node, packages
 from genparams.commands._schemas import add_schema_arguments, load_bounds
 from genparams.commands.check_params import add_known_argument
@@ -16,7 +16,7 @@ from genparams.outputs.explain_text import text_report, yaml_report
 from genparams.paramsfile.explain import RuleError, explain, overrides_document
 from genparams.paramsfile.manifest import read_manifest
 from genparams.paramsfile.params_reader import ParamsDocument, read_params_file
-from genparams.paramsfile.ros_yaml import absolute, node_matches, node_name_problem
+from genparams.paramsfile.ros_yaml import node_matches
 from genparams.schema.errors import SchemaError
 from genparams.schema.input_file import read_input_file
 
@@ -59,10 +59,7 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 
 
 def run(args: argparse.Namespace) -> int:
-    problem = node_name_problem(args.node)
-    if problem is not None:
-        raise CommandError(f"genparams explain: invalid node {args.node!r}: {problem}")
-    node = absolute(args.node)
+    (node,) = node_arguments("explain", [args.node])
     specs, known = list(args.also), list(args.known)
     if args.manifest is not None:
         try:

@@ -5,8 +5,8 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from genparams.commands._common import node_arguments
 from genparams.errors import CommandError
-from genparams.paramsfile.ros_yaml import absolute, node_name_problem
 
 
 def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -28,10 +28,7 @@ def add_parser(subparsers: argparse._SubParsersAction[argparse.ArgumentParser]) 
 
 
 def run(args: argparse.Namespace) -> int:
-    node = absolute(args.node)
-    problem = node_name_problem(node)
-    if problem is not None:
-        raise CommandError(f"genparams import-node: invalid node {args.node!r}: {problem}")
+    (node,) = node_arguments("import-node", [args.node])
     from genparams.commands._importing import finish
     from genparams.import_node.convert import import_node
     from genparams.import_node.read import read_node

@@ -6,8 +6,8 @@ import argparse
 import os
 from pathlib import Path
 
+from genparams.commands._common import node_arguments
 from genparams.errors import CommandError
-from genparams.paramsfile.ros_yaml import absolute, node_name_problem
 
 # The page's web stack comes with the tune extra; a plain `pip install genparams` leaves it out.
 WEB_STACK = ("starlette", "uvicorn")
@@ -84,10 +84,7 @@ def run(args: argparse.Namespace) -> int:
             f"genparams tune: the tuning page needs the tune extra ({' and '.join(WEB_STACK)}):"
             f" {INSTALL_HINT}"
         ) from None
-    for node in args.nodes:
-        problem = node_name_problem(absolute(node))
-        if problem is not None:
-            raise CommandError(f"genparams tune: invalid node {node!r}: {problem}")
+    nodes = node_arguments("tune", args.nodes)
     from genparams.tune.security import token_problem
 
     token = args.token or os.environ.get(TOKEN_VARIABLE) or None
@@ -96,7 +93,7 @@ def run(args: argparse.Namespace) -> int:
     server = TuneServer(
         args.host,
         args.port,
-        nodes=tuple(absolute(n) for n in args.nodes),
+        nodes=nodes,
         read_only=args.read_only,
         token=token,
         trusted_packages=tuple(args.trust_package),

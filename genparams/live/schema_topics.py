@@ -2,8 +2,8 @@
 their own node only.
 
 A schema message is trusted when it is well formed (read by
-:mod:`~genparams.runtime.core.schema_message`, every pattern's cost told first by
-:mod:`genparams.live.pattern_cost`), every node that published on the topic is the
+:mod:`~genparams.runtime.core.schema_message`, whose compile costs every pattern before
+any engine compiles it), every node that published on the topic is the
 node the topic belongs to, and no other node in the graph has that name: a second
 node of the same name could publish in its place, so two nodes claiming one name
 leave neither a schema. Otherwise the node gets a problem in place of its schema,
@@ -14,30 +14,18 @@ from __future__ import annotations
 
 import threading
 import time
-from collections.abc import Callable, Iterator
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
 from rclpy.node import Node
-from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
 from rclpy.subscription import Subscription
 from std_msgs.msg import String
 
-from genparams.live.pattern_cost import pattern_cost_problem
-from genparams.runtime.core.json_codec import JsonError, loads
-from genparams.runtime.core.schema_message import (
-    SCHEMA_MESSAGE_LIMITS,
-    SchemaProblem,
-    check_schema_message,
-)
-from genparams.runtime.node.schema_topic import SCHEMA_TOPIC_SUFFIX
+from genparams.runtime.core.schema_message import SchemaProblem, read_schema_message
+from genparams.runtime.node.schema_topic import SCHEMA_TOPIC_SUFFIX, schema_qos
 
-SCHEMA_QOS = QoSProfile(
-    depth=1,
-    history=HistoryPolicy.KEEP_LAST,
-    reliability=ReliabilityPolicy.RELIABLE,
-    durability=DurabilityPolicy.TRANSIENT_LOCAL,
-)
+SCHEMA_QOS = schema_qos()
 NOT_IDENTIFIED = "published by a node not identified yet"  # DDS knows it, ROS not its name
 
 
@@ -55,35 +43,6 @@ def publisher_node(info: Any) -> str | None:
     if name.startswith("_NODE_NAME_UNKNOWN") or namespace.startswith("_NODE_NAMESPACE_UNKNOWN"):
         return None
     return f"{namespace.rstrip('/')}/{name}"
-
-
-def _patterns(message: Any) -> Iterator[str]:
-    """Every pattern a decoded message names: each ``["pattern", TEXT]`` pair in it."""
-    stack = [message]
-    while stack:
-        item = stack.pop()
-        if isinstance(item, dict):
-            stack.extend(item.values())
-        elif isinstance(item, list):
-            if len(item) == 2 and item[0] == "pattern" and isinstance(item[1], str):
-                yield item[1]
-            stack.extend(item)
-
-
-def read_schema_text(text: str, node: str) -> dict[str, Any] | SchemaProblem:
-    """The message ``node``'s schema topic carried, or why it cannot be used."""
-    try:
-        message = loads(text, SCHEMA_MESSAGE_LIMITS)
-    except JsonError as exc:
-        return SchemaProblem(f"schema message: {exc}")
-    for pattern in _patterns(message):
-        costly = pattern_cost_problem(pattern)
-        if costly is not None:
-            return SchemaProblem(f"schema message: {costly}")
-    problem = check_schema_message(message, node)
-    if problem is not None:
-        return problem
-    return dict(message)
 
 
 class SchemaTopics:
@@ -171,7 +130,7 @@ class SchemaTopics:
     def on_schema(self, owner: str, message: String) -> None:
         """Keep the message of ``owner``'s topic, read but not yet trusted; never raises."""
         try:
-            read = read_schema_text(message.data, owner)
+            read = read_schema_message(message.data, owner)
             writers = tuple(self.writers(owner).items())
         except Exception as exc:  # a callback that raises would end the executor's thread
             read, writers = SchemaProblem(f"schema message cannot be read: {exc!r}"), ()

@@ -20,7 +20,7 @@ from genparams.paramsfile.params_reader import ParamEntry, ParamsDocument, Secti
 from genparams.paramsfile.ros_yaml import ros_type_name
 from genparams.paramsfile.section_checker import SectionChecker
 from genparams.runtime.core.naming import join_prefix
-from genparams.runtime.core.suggest import closest, did_you_mean_name
+from genparams.runtime.core.suggest import closest_name, did_you_mean_name
 from genparams.schema.errors import Location, SchemaProblem
 from genparams.schema.model import Schema
 
@@ -169,9 +169,7 @@ def _unreached(documents: Sequence[ParamsDocument], nodes: Sequence[str]) -> lis
 def _closest_section(node: str, sections: Sequence[str]) -> str:
     """`` (did you mean /robot/cam?)``: the section with the node's own name in another
     namespace when there is one such section, else the closest name, else ""."""
-    name = node.rsplit("/", 1)[-1]
-    same_name = [s for s in sections if s.rsplit("/", 1)[-1] == name]
-    found = same_name[0] if len(same_name) == 1 else closest(node, sections)
+    found = closest_name(node, sections, separator="/", by_leaf=False)
     return f" (did you mean {found}?)" if found is not None else ""
 
 

@@ -25,7 +25,6 @@ mapped entries.
 
 from __future__ import annotations
 
-import re
 from collections.abc import Collection, Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import Any
@@ -35,7 +34,8 @@ from rclpy.node import Node
 from rclpy.parameter import Parameter
 
 from genparams.errors import GenparamsError, ParameterProblem, render_problem, render_problems
-from genparams.runtime.core.naming import ENTRY_KEY, join_prefix
+from genparams.runtime.core.entries import template_keys
+from genparams.runtime.core.naming import join_prefix
 from genparams.runtime.core.rule_check import violations
 from genparams.runtime.core.schema_message import class_spec, why_not_run
 from genparams.runtime.core.spec import CompiledParam, CompiledSchema, compile_uncached
@@ -100,11 +100,10 @@ def not_run_here(param: CompiledParam) -> list[str]:
 
 @dataclass(frozen=True)
 class ClassChecks:
-    """One class of a schema message, compiled; ``entries`` matches mapped entries' names."""
+    """One class of a schema message, compiled."""
 
     prefix: str
     compiled: CompiledSchema
-    entries: tuple[tuple[re.Pattern[str], CompiledParam], ...]
 
     def relative(self, full_name: str) -> str:
         return full_name[len(self.prefix) + 1 :] if self.prefix else full_name
@@ -122,15 +121,11 @@ class ClassChecks:
         found = self.compiled.parameters.get(name)
         if found is not None:
             return found
-        for pattern, template in self.entries:
-            if pattern.fullmatch(name):
+        for template_name, template in self.compiled.templates.items():
+            keys = template_keys(template_name, name)  # a mapped entry: no key is empty
+            if keys is not None and all(keys):
                 return template
         return None
-
-
-def _entry_pattern(template: str) -> re.Pattern[str]:
-    parts = ("[^.]+" if part == ENTRY_KEY else re.escape(part) for part in template.split("."))
-    return re.compile(r"\.".join(parts))
 
 
 def compile_class(body: Mapping[str, Any], trusted: Sequence[str]) -> ClassChecks:
@@ -145,8 +140,7 @@ def compile_class(body: Mapping[str, Any], trusted: Sequence[str]) -> ClassCheck
         parameters={n: runnable_here(p) for n, p in compiled.parameters.items()},
         templates={n: runnable_here(p) for n, p in compiled.templates.items()},
     )
-    entries = tuple((_entry_pattern(name), p) for name, p in compiled.templates.items())
-    return ClassChecks(str(body["prefix"]), compiled, entries)
+    return ClassChecks(str(body["prefix"]), compiled)
 
 
 def compile_message(message: Mapping[str, Any], trusted: Sequence[str]) -> tuple[ClassChecks, ...]:

@@ -15,11 +15,9 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from rclpy.parameter import Parameter
 
-from tests.live.support import audit
-from tests.support import RosHarness, ServiceClient
-from tests.tune.support import demo_nodes, unique
+from tests.support import RosHarness
+from tests.tune.support import demo_nodes, run_audit, set_values_its_schema_forbids, unique
 
 CAM, LOOSE = f"/{unique('options_cam')}", f"/{unique('options_loose')}"
 
@@ -30,9 +28,7 @@ def running(ros_harness: RosHarness) -> Iterator[None]:
         demo_nodes(f"{CAM[1:]}:camera", ros_args=("-p", "camera.fps:=15.0")),
         demo_nodes(f"{LOOSE[1:]}:loose"),
     ):
-        loose = ServiceClient(ros_harness, LOOSE)
-        results = loose.set(Parameter("max_speed", value=7.0), Parameter("weights", value=[0.5]))
-        assert all(r.successful for r in results)
+        set_values_its_schema_forbids(ros_harness, LOOSE)
         yield
 
 
@@ -47,7 +43,7 @@ def deployment(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 def findings(*args: str) -> tuple[int, list[dict[str, Any]]]:
-    done = audit("--format", "json", *args, settle=1.0)
+    done = run_audit("--format", "json", *args, settle=1.0)
     assert "Traceback" not in done.stderr, done.stderr
     return done.returncode, json.loads(done.stdout)["findings"]
 
@@ -74,6 +70,6 @@ def test_only_and_skip_pick_the_kinds_reported(running: None) -> None:
 
 
 def test_a_list_prints_one_way(running: None) -> None:
-    done = audit("--only", "drift-from-default", LOOSE, settle=1.0)
+    done = run_audit("--only", "drift-from-default", LOOSE, settle=1.0)
     line = next(line for line in done.stdout.splitlines() if ": weights:" in line)
     assert "(expected [" in line and "found [0.5])" in line, line

@@ -18,9 +18,9 @@ import pytest
 
 from genparams.runtime.node.schema_topic import SCHEMA_TOPIC_SUFFIX
 from genparams.tune.server import TuneServer
-from tests.live.support import audit, hostile_nodes
+from tests.live.support import hostile_nodes
 from tests.node_process import node_process
-from tests.tune.support import api_call, demo_nodes, eventually, unique
+from tests.tune.support import api_call, demo_nodes, eventually, run_audit, unique
 from tests.tune.test_hostile_schemas import camera_message
 
 CAM, GOOD = f"/{unique('trust_cam')}", f"/{unique('trust_good')}"
@@ -69,7 +69,13 @@ def listed(server: TuneServer) -> dict[str, dict[str, object]]:
 
 def test_two_nodes_of_one_name_leave_neither_a_schema(server: TuneServer) -> None:
     eventually(lambda: listed(server).get(GOOD, {}).get("genparams"))
-    node = eventually(lambda: listed(server).get(CAM) if CAM in listed(server) else None)
+
+    def twin_seen() -> dict[str, object] | None:
+        # CAM can be listed before discovery has found its twin: wait for both.
+        node = listed(server).get(CAM)
+        return node if node is not None and "2 nodes" in str(node["schema_problem"]) else None
+
+    node = eventually(twin_seen)
     assert node["genparams"] is False
     assert f"2 nodes in the graph have the name {CAM}" in str(node["schema_problem"])
     answer = api_call(server, f"/api/node?name={CAM}")
@@ -81,7 +87,7 @@ def test_two_nodes_of_one_name_leave_neither_a_schema(server: TuneServer) -> Non
 def test_the_audit_reports_two_nodes_of_one_name(graph: None) -> None:
     # The whole graph, once its node list (each name with its count) is settled: naming
     # the nodes ends discovery at the first node of a name.
-    done = audit("--format", "json", settle=3.0)
+    done = run_audit("--format", "json", settle=3.0)
     assert "Traceback" not in done.stderr, done.stderr
     findings = json.loads(done.stdout)["findings"]
     kinds = {(f["node"], f["kind"]) for f in findings}
@@ -122,16 +128,16 @@ def test_hidden_nodes_are_listed_only_when_asked(server: TuneServer, graph: None
 
 
 def test_the_audit_lists_hidden_nodes_only_when_asked(graph: None) -> None:
-    plain = audit("--format", "json", settle=3.0)
+    plain = run_audit("--format", "json", settle=3.0)
     assert HIDDEN not in json.loads(plain.stdout)["without_schema"], plain.stderr
-    asked = audit("--format", "json", "--include-hidden", settle=3.0)
+    asked = run_audit("--format", "json", "--include-hidden", settle=3.0)
     assert HIDDEN in json.loads(asked.stdout)["without_schema"], asked.stderr
 
 
 def test_a_pattern_that_multiplies_out_is_a_schema_problem(server: TuneServer) -> None:
     node = eventually(lambda: listed(server).get(COSTLY, {}).get("schema_problem"))
     assert "expands to more than" in str(node) and COSTLY_PATTERN in str(node)
-    done = audit("--format", "json", COSTLY)
+    done = run_audit("--format", "json", COSTLY, settle=3.0)
     assert "Traceback" not in done.stderr, done.stderr
     details = [
         f["detail"] for f in json.loads(done.stdout)["findings"] if f["kind"] == "bad-schema"

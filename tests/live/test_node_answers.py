@@ -12,8 +12,8 @@ from typing import Any
 import pytest
 
 from genparams.tune.server import TuneServer
-from tests.live.support import audit, genparams, hostile_nodes
-from tests.tune.support import api_call, demo_nodes, eventually, unique
+from tests.live.support import hostile_nodes
+from tests.tune.support import api_call, demo_nodes, eventually, run_audit, run_genparams, unique
 
 SHORT, TYPE42, HUGE, DEEP = (f"/{unique(f'answers_{k}')}" for k in ("short", "t42", "huge", "deep"))
 CAM = f"/{unique('answers_cam')}"
@@ -48,7 +48,7 @@ def server(graph: None) -> Iterator[TuneServer]:
 
 
 def test_the_audit_reports_each_bad_answer_and_audits_the_good_node(graph: None) -> None:
-    done = audit("--format", "json", CAM, *EXPECTED)
+    done = run_audit("--format", "json", CAM, *EXPECTED, settle=3.0)
     assert "Traceback" not in done.stderr, done.stderr
     assert done.returncode == 1, done.stdout + done.stderr
     report = json.loads(done.stdout)
@@ -75,7 +75,7 @@ def test_the_page_api_answers_422_naming_the_problem(server: TuneServer, node: s
 
 @pytest.mark.parametrize("node", [SHORT, TYPE42])
 def test_import_node_names_the_problem(graph: None, node: str) -> None:
-    done = genparams("import-node", node, "--timeout", "60")
+    done = run_genparams("import-node", node, "--timeout", "60")
     assert "Traceback" not in done.stderr, done.stderr
     assert done.returncode == 2, done.stdout + done.stderr
     assert done.stderr.startswith(f"genparams import-node: {node}: its ")

@@ -18,8 +18,7 @@ from types import FrameType
 from typing import Any
 
 from genparams.audit.schema_checks import check_node
-from genparams.live.schema_topics import read_schema_text
-from genparams.runtime.core.schema_message import SchemaProblem
+from genparams.runtime.core.schema_message import SchemaProblem, read_schema_message
 from genparams.tune.places import entry_places
 
 NODE = "/chain"
@@ -51,11 +50,11 @@ def message(parameters: list[dict[str, Any]], maps: list[dict[str, Any]]) -> str
 
 def test_a_pattern_that_multiplies_is_a_problem_before_it_is_compiled() -> None:
     costly = message([field("label", [["pattern", "(?:x{400}){400}"]])], [])
-    read = read_schema_text(costly, NODE)
+    read = read_schema_message(costly, NODE)
     assert isinstance(read, SchemaProblem)
     assert "expands to more than" in read.detail and "(?:x{400}){400}" in read.detail
     fine = message([field("label", [["pattern", r"^\d{1,3}(\.\d{1,3}){3}$"]])], [])
-    assert not isinstance(read_schema_text(fine, NODE), SchemaProblem)
+    assert not isinstance(read_schema_message(fine, NODE), SchemaProblem)
 
 
 def chain(depth: int) -> tuple[str, dict[str, Any]]:
@@ -94,7 +93,7 @@ def work(depth: int) -> tuple[int, int]:
     text, values = chain(depth)
 
     def everything() -> None:
-        schema = read_schema_text(text, NODE)
+        schema = read_schema_message(text, NODE)
         assert isinstance(schema, dict)
         parameters = [{"name": n, "type": "double", "value": v} for n, v in values.items()]
         assert len(entry_places(schema, parameters)) == depth

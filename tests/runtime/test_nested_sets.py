@@ -1,4 +1,4 @@
-"""Sets nested in callbacks are committed once each, in the node's order (issue item 1)."""
+"""Sets nested in callbacks are committed once each, in the node's order."""
 
 from __future__ import annotations
 

@@ -14,6 +14,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from playwright.sync_api import Locator, Page, expect
+from rclpy.parameter import Parameter
 
 from genparams.runtime.core.json_codec import dumps
 from tests.node_process import node_process
@@ -48,12 +49,28 @@ def demo_nodes(
     return node_process("tests.tune.demo_nodes", *specs, *(("--", *ros_args) if ros_args else ()))
 
 
-def run_audit(*args: str, cwd: Path = ROOT) -> subprocess.CompletedProcess[str]:
-    """``genparams audit ARGS`` on nodes that all publish a schema: its waits (discovery, the
-    schema topics, the answers) end as soon as discovery does, however long that takes."""
+def set_values_its_schema_forbids(harness: RosHarness, loose_node: str) -> None:
+    """On a ``loose`` demo node, values its schema forbids (``max_speed`` 7.0 and a one-item
+    ``weights``), set through the services as ``ros2 param set`` would."""
+    loose = ServiceClient(harness, loose_node)
+    results = loose.set(Parameter("max_speed", value=7.0), Parameter("weights", value=[0.5]))
+    assert all(r.successful for r in results)
+
+
+def run_genparams(*args: str, cwd: Path = ROOT) -> subprocess.CompletedProcess[str]:
+    """``genparams ARGS`` run to its end, however loaded the machine."""
+    command = [sys.executable, "-m", "genparams", *args]
+    return run_patiently(command, budget_s=2 * WAIT_S, cwd=cwd)
+
+
+def run_audit(
+    *args: str, cwd: Path = ROOT, settle: float = WAIT_S
+) -> subprocess.CompletedProcess[str]:
+    """``genparams audit ARGS``: it waits for each named node to appear (up to WAIT_S), then
+    ``settle`` seconds for schema topics of those that publish none. On nodes that all
+    publish a schema, its waits end as soon as discovery does, however long that takes."""
     wait = f"{WAIT_S:g}"
-    command = [sys.executable, "-m", "genparams", "audit", "--settle", wait, "--timeout", wait]
-    return run_patiently([*command, *args], budget_s=2 * WAIT_S, cwd=cwd)
+    return run_genparams("audit", "--settle", f"{settle:g}", "--timeout", wait, *args, cwd=cwd)
 
 
 def eventually(probe: Callable[[], Any], timeout: float = WAIT_S, interval: float = 0.05) -> Any:

@@ -7,7 +7,6 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-from rclpy.parameter import Parameter
 
 from genparams.audit.deployment import read_deployment
 from genparams.audit.findings import DRIFT_DEFAULT, DRIFT_FILE, NO_SCHEMA, VIOLATION
@@ -16,8 +15,14 @@ from genparams.audit.walk import AuditResult, audit
 from genparams.live.graph import Graph
 from genparams.runtime.node.schema_topic import SCHEMA_TOPIC_SUFFIX
 from tests.patience import WAIT_S
-from tests.support import RosHarness, ServiceClient
-from tests.tune.support import demo_nodes, eventually, run_audit, unique
+from tests.support import RosHarness
+from tests.tune.support import (
+    demo_nodes,
+    eventually,
+    run_audit,
+    set_values_its_schema_forbids,
+    unique,
+)
 
 LOOSE, PLAIN, CAM, ARM = (f"/{unique(f'audit_{s}')}" for s in ("loose", "plain", "cam", "arm"))
 NODES = (LOOSE, PLAIN, CAM, ARM)
@@ -29,10 +34,7 @@ def running(ros_harness: RosHarness) -> Iterator[None]:
         demo_nodes(f"{LOOSE[1:]}:loose", f"{PLAIN[1:]}:plain"),
         demo_nodes(f"{CAM[1:]}:camera", f"{ARM[1:]}:arm"),
     ):
-        # A value the schema forbids, set through the services as `ros2 param set` would.
-        loose = ServiceClient(ros_harness, LOOSE)
-        results = loose.set(Parameter("max_speed", value=7.0), Parameter("weights", value=[0.5]))
-        assert all(r.successful for r in results)
+        set_values_its_schema_forbids(ros_harness, LOOSE)
         yield
 
 

@@ -30,20 +30,28 @@ def did_you_mean(word: str, options: Iterable[str]) -> str:
 
 
 def did_you_mean_name(name: str, candidates: Iterable[str]) -> str:
-    """The hint for a misspelt or misplaced dotted name: the one name with the same last
-    segment (moved to another namespace), else the closest whole name, else the name whose
-    last segment is closest (misspelt deep in a namespace)."""
+    """The hint for a misspelt or misplaced dotted name (:func:`closest_name`)."""
+    return hint(closest_name(name, candidates))
+
+
+def closest_name(
+    name: str, candidates: Iterable[str], *, separator: str = ".", by_leaf: bool = True
+) -> str | None:
+    """The candidate a misspelt or misplaced name (segments joined by ``separator``) meant:
+    the one with the same last segment (moved to another namespace), else the closest
+    whole name, else, ``by_leaf``, the one whose last segment is closest (misspelt deep in
+    a namespace)."""
     candidates = sorted(candidates)
-    last = name.rsplit(".", 1)[-1]
-    same_leaf = [c for c in candidates if c.rsplit(".", 1)[-1] == last]
+    last = name.rsplit(separator, 1)[-1]
+    same_leaf = [c for c in candidates if c.rsplit(separator, 1)[-1] == last]
     if len(same_leaf) == 1:
-        return hint(same_leaf[0])
+        return same_leaf[0]
     found = closest(name, candidates)
-    if found is None:
-        leaves = {c.rsplit(".", 1)[-1]: c for c in candidates}
+    if found is None and by_leaf:
+        leaves = {c.rsplit(separator, 1)[-1]: c for c in candidates}
         near = closest(last, leaves, cutoff=LEAF_CUTOFF)
         found = leaves[near] if near is not None else None
-    return hint(found)
+    return found
 
 
 def numbered_copies(one: str, other: str) -> bool:

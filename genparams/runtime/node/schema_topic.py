@@ -32,11 +32,25 @@ from genparams.runtime.core.spec import CompiledParam, CompiledSchema
 if TYPE_CHECKING:
     from rclpy.node import Node
     from rclpy.publisher import Publisher
+    from rclpy.qos import QoSProfile
 
 SCHEMA_TOPIC = "~/genparams/schema"
 """Relative to the node: ``/ns/camera`` publishes on ``/ns/camera/genparams/schema``."""
 
 SCHEMA_TOPIC_SUFFIX = "/genparams/schema"
+
+
+def schema_qos() -> QoSProfile:
+    """The schema topic's QoS, for its publisher and every reader: the last message, kept
+    for late subscribers (transient local)."""
+    from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
+
+    return QoSProfile(
+        depth=1,
+        history=HistoryPolicy.KEEP_LAST,
+        reliability=ReliabilityPolicy.RELIABLE,
+        durability=DurabilityPolicy.TRANSIENT_LOCAL,
+    )
 
 
 def json_value(value: Any) -> Any:
@@ -226,7 +240,6 @@ class SchemaPublisher:
 
     def __init__(self, node: Node) -> None:
         from rclpy.event_handler import PublisherEventCallbacks, UnsupportedEventTypeError
-        from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
 
         String = string_message_type()  # noqa: N806 (a class)
 
@@ -237,12 +250,7 @@ class SchemaPublisher:
         self.message_type = String
         self.lock = threading.Lock()
         self.requested = False  # a subscriber matched once: publish every change at once
-        qos = QoSProfile(
-            depth=1,
-            history=HistoryPolicy.KEEP_LAST,
-            reliability=ReliabilityPolicy.RELIABLE,
-            durability=DurabilityPolicy.TRANSIENT_LOCAL,
-        )
+        qos = schema_qos()
         try:
             self.publisher: Publisher = node.create_publisher(
                 String,
