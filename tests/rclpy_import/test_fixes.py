@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import shutil
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -223,3 +224,35 @@ def test_a_per_item_name_in_a_variable_holding_more_stays_out(
     assert code == 1 and "gains" not in parameters
     assert parameters["offsets"] == {"type": "double", "default": 0.0, "for_each": "joints"}
     assert ":6:36: warning: a name computed at run time (a call of joint.upper())" in err
+
+
+def test_the_patch_drops_a_variable_that_only_named_a_declaration(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    source = tmp_path / "axes.py"
+    source.write_text(
+        "class Axes:\n    def __init__(self):\n"
+        "        self.declare_parameter('axes', ['x'])\n"
+        "        for axis in self.get_parameter('axes').value:\n"
+        "            key = 'tolerance.' + axis\n"
+        "            self.declare_parameter(key, 0.05)\n"
+        "        for axis in self.get_parameter('axes').value:\n"
+        "            name = 'gain.' + axis\n"
+        "            self.declare_parameter(name, 1.0)\n"
+        "            print(self.get_parameter(name).value)\n",
+        encoding="utf-8",
+    )
+    monkeypatch.chdir(tmp_path)
+    code, diff, _ = run(capsys, "axes.py", "--patch")
+    assert code == 0
+    assert "-            key = 'tolerance.' + axis\n" in diff
+    assert "-            name = 'gain.' + axis\n" not in diff  # still read
+    if shutil.which("patch"):
+        subprocess.run(["patch", "-p0", "--quiet"], input=diff, text=True, check=True)
+        lint = subprocess.run(
+            [sys.executable, "-m", "ruff", "check", "--isolated", "--select", "F,E9", "axes.py"],
+            capture_output=True,
+            text=True,
+            check=False,
+        )
+        assert lint.returncode == 0, lint.stdout
