@@ -9,6 +9,7 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 from genparams.rclpy_import.found import Found, Piece, SourceFile
+from genparams.rclpy_import.item_names import folded
 from genparams.rclpy_import.scope import Scope, UntranslatableError, unparsed
 from genparams.rclpy_import.values import Evaluator
 from genparams.schema.errors import Location
@@ -118,6 +119,10 @@ def _found(
     **more: Any,
 ) -> Found:
     name, value, descriptor = pieces[:3]
+    variable = context.loop_variable
+    if name.problem is not None and variable is not None and isinstance(name_node, ast.expr):
+        # a name built in a variable, or from a nested function's argument
+        name_node = folded(name_node, scope, variable) or name_node
     found = Found(
         call,
         at,

@@ -142,6 +142,7 @@ class _Patcher:
                 if statement is first:
                     removed_first = removed
             self.place_declare(first, declare, removed_first)
+            self.drop_name_variables()
             self.fill_emptied(first if removed_first else None)
         self.rewrite_reads()
         self.add_import()
@@ -356,6 +357,30 @@ class _Patcher:
         else:
             start = self.source.starts[first.lineno - 1]
             self.edits.append(Edit(start, start, f"{indent}{declare}\n"))
+
+    def drop_name_variables(self) -> None:
+        """``key = 'tolerance.' + axis`` just before a declaration of ``key`` that went,
+        when nothing else reads ``key``: it goes too."""
+        for statement in list(self.removed):
+            body = body_of(statement, self.parents)
+            value = statement.value if isinstance(statement, ast.Expr) else None
+            if body is None or not isinstance(value, ast.Call) or not value.args:
+                continue
+            name = value.args[0]
+            index = body.index(statement)
+            assigned = body[index - 1] if index > 0 else None
+            if (
+                not isinstance(name, ast.Name)
+                or not isinstance(assigned, ast.Assign)
+                or [ast.unparse(t) for t in assigned.targets] != [name.id]
+            ):
+                continue
+            loads = [
+                n for n in ast.walk(self.cls)
+                if isinstance(n, ast.Name) and n.id == name.id and isinstance(n.ctx, ast.Load)
+            ]  # fmt: skip
+            if loads == [name] and assigned not in self.removed:
+                self.remove(assigned)
 
     def fill_emptied(self, keep: ast.stmt | None) -> None:
         """A block whose every statement was removed gets ``pass``."""

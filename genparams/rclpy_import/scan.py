@@ -35,6 +35,7 @@ from genparams.rclpy_import.scope import Scope, UntranslatableError, unparsed
 from genparams.rclpy_import.shapes import (
     OPEN_OPTIONS,
     called,
+    calls_to,
     declares,
     defines,
     guards_redeclaring,
@@ -190,7 +191,14 @@ class _Scanner:
         self.walk(function.body, inner, context)
 
     def walk(self, body: list[ast.stmt], scope: Scope, context: Context) -> None:
-        for statement in body:
+        for index, statement in enumerate(body):
+            if isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef)) and calls_to(
+                statement.name, body[index + 1 :]
+            ):
+                # a nested function called after its definition: read at each call
+                closures = {**scope.closures, statement.name: statement}
+                scope = replace(scope, closures=closures)
+                continue
             self.statement(statement, scope, context)
 
     def statement(self, statement: ast.stmt, scope: Scope, context: Context) -> None:
@@ -344,6 +352,12 @@ class _Scanner:
         if name is None:
             return
         site = context.call_site or context.source.location(call)
+        closure = scope.closures.get(name)
+        if closure is not None:
+            self.closure(closure, call, scope, context.changed(
+                via=context.via or f"the nested function {name}()", call_site=site,
+            ))  # fmt: skip
+            return
         helper = scope.functions.get(name)
         module_function = self.view.functions.get(name)
         if helper is not None and (
@@ -392,6 +406,32 @@ class _Scanner:
         self.stack.append(helper)
         try:
             self.walk(helper.body, inner, context.changed(condition=context.condition))
+        finally:
+            self.stack.pop()
+
+    def closure(
+        self,
+        function: ast.FunctionDef | ast.AsyncFunctionDef,
+        call: ast.Call,
+        scope: Scope,
+        context: Context,
+    ) -> None:
+        """Read a nested function's body at one of its calls: its arguments bound to the
+        call's values, the enclosing function's variables (and loop) seen as they are."""
+        if function in self.stack:
+            return
+        reads: list[str] = []
+        bound = self.bound_arguments(function, call, scope, scope, reads)
+        if reads:
+            context = context.changed(reads=tuple(dict.fromkeys([*context.reads, *reads])))
+        own = set(bound) | {a.arg for a in function.args.args}
+        loop = {k: v for k, v in scope.loop.items() if k not in own}
+        local = {k: v for k, v in scope.local.items() if k not in own}
+        inner = replace(scope, loop=loop, local={**local, **locals_of(function)})
+        inner = inner.with_loop(bound)
+        self.stack.append(function)
+        try:
+            self.walk(function.body, inner, context)
         finally:
             self.stack.pop()
 

@@ -85,6 +85,10 @@ class Scope:
     # Helpers that build a value (``def ranged(lo, hi): return ParameterDescriptor(...)``):
     # the module's functions, the class's methods (as "self.name") and nested functions.
     functions: Mapping[str, ast.FunctionDef] = field(default_factory=dict)
+    # Functions defined inside the function being read, called after their definition
+    # (``def sub(part): self.declare_parameter(f"{name}.{part}", 0.0)`` in a loop): read
+    # at each call, seeing the enclosing function's variables.
+    closures: Mapping[str, ast.FunctionDef | ast.AsyncFunctionDef] = field(default_factory=dict)
     # Parameters declared before, with their values: a value read from one of them
     # (``[0.0] * len(self.get_parameter('joints').value)``) is computed from its default.
     parameters: Mapping[str, Any] = field(default_factory=dict)

@@ -62,6 +62,15 @@ def called(call: ast.Call) -> str | None:
     return None
 
 
+def calls_to(name: str, body: list[ast.stmt]) -> bool:
+    """Whether ``body`` calls the function ``name`` (``name(...)``)."""
+    return any(
+        isinstance(n, ast.Call) and isinstance(n.func, ast.Name) and n.func.id == name
+        for statement in body
+        for n in ast.walk(statement)
+    )
+
+
 def hands_node(call: ast.Call, in_class: bool) -> bool:
     """The node is given to the call: ``Driver(self)``, ``Driver(node=self)`` in a node
     class; a variable (``Updater(node)``) in the module's functions."""

@@ -60,6 +60,7 @@ __all__ = [
 _MAX_DEPTH = 32  # constants defined through constants, never in a loop
 
 
+_BUILTINS: dict[str, Any] = {"float": float, "int": int, "str": str, "bool": bool}
 _NUMPY = ("np", "numpy")
 _FUNCTIONS: dict[str, Callable[..., Any]] = {
     "math.radians": math.radians,
@@ -239,10 +240,10 @@ class Evaluator:
             return self._descriptor(node)
         if last in ("FloatingPointRange", "IntegerRange"):
             return self._range(node, integer=last == "IntegerRange")
-        if function in ("float", "int", "str", "bool") and len(node.args) == 1:
-            argument = self.value(node.args[0])
+        if function in _BUILTINS and not node.keywords and len(node.args) <= 1:
+            arguments = [self.value(a) for a in node.args]  # ``float()`` is 0.0
             try:
-                return {"float": float, "int": int, "str": str, "bool": bool}[function](argument)
+                return _BUILTINS[function](*arguments)
             except (TypeError, ValueError):
                 pass
         if last == _SHARE and len(node.args) == 1 and not node.keywords:

@@ -39,6 +39,7 @@ CASES = [
     Case("sensor_hub", "sensor_hub.py", None, 1, params="sensor_hub.params.yaml"),
     Case("serial_driver", "serial_driver.py", None, 0, declare="declare"),
     Case("two_nodes_service", "two_nodes.py", "ServiceNode", 0),
+    Case("waypoint_player", "waypoint_player.py", None, 0),
 ]
 CLASSES = {
     "arm_controller": "ArmControllerNode",
@@ -49,4 +50,5 @@ CLASSES = {
     "planner": "PlannerNode",
     "sensor_hub": "SensorHubNode",
     "two_nodes_service": "ServiceNode",
+    "waypoint_player": "WaypointPlayer",
 }

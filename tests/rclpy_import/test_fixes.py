@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import shutil
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -163,3 +164,95 @@ def test_a_default_computed_from_another_parameter_is_kept_with_a_note(
     assert "limits: note: a default computed from the parameter(s) 'joints'" in err
     assert "gains.{j}: note: a default computed from the parameter(s) 'default_gain'" in err
     assert err.endswith("imported 4 of 4 parameters (2 approximately)\n")
+
+
+def test_a_nested_function_only_handed_on_stays_out_with_a_warning(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = tmp_path / "later.py"
+    source.write_text(
+        "class Later:\n    def __init__(self):\n"
+        "        self.declare_parameter('rate', 1.0)\n"
+        "        def late():\n"
+        "            self.declare_parameter('late', 2.0)\n"
+        "        self.create_timer(1.0, late)\n",
+        encoding="utf-8",
+    )
+    code, out, err = run(capsys, str(source))
+    assert code == 1 and "late" not in yaml.safe_load(out)["parameters"]
+    assert "late: warning: declared inside the nested definition late: parameter left out" in err
+
+
+def test_a_nested_function_is_read_at_each_call_with_its_arguments(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = tmp_path / "calls.py"
+    source.write_text(
+        "class Calls:\n    def __init__(self):\n"
+        "        base = 'limits'\n"
+        "        def limit(axis, value=1.0):\n"
+        "            name = base + '.' + axis\n"
+        "            self.declare_parameter(name, value)\n"
+        "        limit('x')\n"
+        "        limit('y', value=2.5)\n",
+        encoding="utf-8",
+    )
+    code, out, err = run(capsys, str(source))
+    assert code == 0, err
+    assert yaml.safe_load(out)["parameters"] == {
+        "limits": {"x": {"type": "double", "default": 1.0}, "y": {"type": "double", "default": 2.5}}
+    }
+    assert ":7:9: limits.x: note: declared by the nested function limit()" in err
+
+
+def test_a_per_item_name_in_a_variable_holding_more_stays_out(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = tmp_path / "upper.py"
+    source.write_text(
+        "class Upper:\n    def __init__(self):\n"
+        "        self.declare_parameter('joints', ['a'])\n"
+        "        for joint in self.get_parameter('joints').value:\n"
+        "            key = 'gains.' + joint.upper()\n"
+        "            self.declare_parameter(key, 1.0)\n"
+        "            key = 'offsets.' + joint\n"
+        "            self.declare_parameter(key, 0.0)\n",
+        encoding="utf-8",
+    )
+    code, out, err = run(capsys, str(source))
+    parameters = yaml.safe_load(out)["parameters"]
+    assert code == 1 and "gains" not in parameters
+    assert parameters["offsets"] == {"type": "double", "default": 0.0, "for_each": "joints"}
+    assert ":6:36: warning: a name computed at run time (a call of joint.upper())" in err
+
+
+def test_the_patch_drops_a_variable_that_only_named_a_declaration(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    source = tmp_path / "axes.py"
+    source.write_text(
+        "class Axes:\n    def __init__(self):\n"
+        "        self.declare_parameter('axes', ['x'])\n"
+        "        for axis in self.get_parameter('axes').value:\n"
+        "            key = 'tolerance.' + axis\n"
+        "            self.declare_parameter(key, 0.05)\n"
+        "        for axis in self.get_parameter('axes').value:\n"
+        "            name = 'gain.' + axis\n"
+        "            self.declare_parameter(name, 1.0)\n"
+        "            print(self.get_parameter(name).value)\n",
+        encoding="utf-8",
+    )
+    monkeypatch.chdir(tmp_path)
+    code, diff, _ = run(capsys, "axes.py", "--patch")
+    assert code == 0
+    assert "-            key = 'tolerance.' + axis\n" in diff
+    assert "-            name = 'gain.' + axis\n" not in diff  # still read
+    if shutil.which("patch"):
+        subprocess.run(["patch", "-p0", "--quiet"], input=diff, text=True, check=True)
+        lint = subprocess.run(
+            [sys.executable, "-m", "ruff", "check", "--isolated", "--select", "F,E9", "axes.py"],
+            capture_output=True,
+            text=True,
+            check=False,
+        )
+        assert lint.returncode == 0, lint.stdout

@@ -154,6 +154,7 @@ def test_every_case_is_counted() -> None:
         "sensor_hub": (5, 1, 0),
         "serial_driver": (2, 0, 0),
         "two_nodes_service": (1, 0, 0),
+        "waypoint_player": (5, 0, 0),
     }
 
 
