@@ -27,12 +27,13 @@ from genparams.live.answers import (
     checked_single,
     checked_values,
 )
+from genparams.runtime.core.errors import GenparamsError
 
 RESEND_SECONDS = 1.0
 SET_IDS = itertools.count(1)
 
 
-class StillWorkingError(TimeoutError):
+class StillWorkingError(GenparamsError, TimeoutError):
     """A set the node has not answered yet: sent once, never again; ``future`` ends later.
 
     ``set_id`` names the set in the event that tells its outcome (see

@@ -140,7 +140,7 @@ def test_lean_install_has_no_web_stack_and_tune_says_what_to_install(
         [venv / "bin" / "python", "-c", "import pkgutil, importlib, genparams;"
          "names = [m.name for m in pkgutil.walk_packages(genparams.__path__, 'genparams.')];"
          "web = {'genparams.tune.' + m for m in"
-         " ('app', 'server', 'events', 'json_response', 'security')};"
+         " ('app', 'server', 'events', 'json_response', 'security', 'connections', 'keep')};"
          "[importlib.import_module(n) for n in names if n not in web and '__main__' not in n];"
          "print(len(names))"],
         tmp_path,

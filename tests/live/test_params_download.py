@@ -36,6 +36,7 @@ def server(tmp_path_factory: pytest.TempPathFactory) -> Iterator[TuneServer]:
         tune.start()
         try:
             eventually(lambda: tune.graph.schema(OPEN))
+            eventually(lambda: DOTTED in tune.graph.node_names())  # a plain node: no schema
             yield tune
         finally:
             tune.stop()

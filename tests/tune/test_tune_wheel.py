@@ -9,7 +9,7 @@ import pytest
 
 from tests.build_support import build_wheel, copy_repository
 
-ASSETS = ("index.html", "app.js", "api.js", "form.js", "json.js", "style.css")
+ASSETS = ("index.html", "app.js", "api.js", "form.js", "json.js", "keep.js", "style.css")
 
 
 @pytest.mark.slow

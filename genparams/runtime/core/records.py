@@ -16,10 +16,6 @@ store = object.__setattr__
 """How a record's ``__init__`` sets a field of a frozen record."""
 
 
-class FrozenRecordError(AttributeError):
-    """A field of a record was assigned or deleted (dataclasses' FrozenInstanceError)."""
-
-
 class Record:
     __slots__ = ()
     _fields: ClassVar[tuple[str, ...]] = ()
@@ -40,9 +36,13 @@ class Record:
         return f"{type(self).__qualname__}({shown})"
 
     def __setattr__(self, name: str, value: Any) -> None:
+        from genparams.runtime.core.errors import FrozenRecordError  # errors imports records
+
         raise FrozenRecordError(f"cannot assign to field {name!r}")
 
     def __delattr__(self, name: str) -> None:
+        from genparams.runtime.core.errors import FrozenRecordError  # errors imports records
+
         raise FrozenRecordError(f"cannot delete field {name!r}")
 
     def __reduce__(self) -> tuple[Any, ...]:
