@@ -11,10 +11,6 @@ class GenparamsError(Exception):
     """The base of every error genparams raises (the runtime's and the compiler's)."""
 
 
-class FrozenRecordError(GenparamsError, AttributeError):
-    """A field of a frozen record was assigned or deleted (as dataclasses' FrozenInstanceError)."""
-
-
 class ParameterDeclarationError(GenparamsError):
     """A node's parameters cannot be declared: every problem is listed, nothing was declared.
 

@@ -36,14 +36,14 @@ class Record:
         return f"{type(self).__qualname__}({shown})"
 
     def __setattr__(self, name: str, value: Any) -> None:
-        from genparams.runtime.core.errors import FrozenRecordError  # errors imports records
+        from dataclasses import FrozenInstanceError  # what a frozen dataclass raises
 
-        raise FrozenRecordError(f"cannot assign to field {name!r}")
+        raise FrozenInstanceError(f"cannot assign to field {name!r}")
 
     def __delattr__(self, name: str) -> None:
-        from genparams.runtime.core.errors import FrozenRecordError  # errors imports records
+        from dataclasses import FrozenInstanceError  # what a frozen dataclass raises
 
-        raise FrozenRecordError(f"cannot delete field {name!r}")
+        raise FrozenInstanceError(f"cannot delete field {name!r}")
 
     def __reduce__(self) -> tuple[Any, ...]:
         return (type(self), self._values())
