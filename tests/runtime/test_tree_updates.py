@@ -137,3 +137,19 @@ def test_reuse_copies_maps_of_entries() -> None:
     after = reuse_values(holder.root, {("single", "a", "only"): 2})
     assert after.single["a"].only == 2 and entries["a"].only == 1
     assert list(iterator) == ["a"]
+
+
+@pytest.mark.parametrize(
+    "updates",
+    [
+        {("single", "a", "only"): 2},  # one update: a path through the map
+        {("single", "a", "only"): 2, ("rate",): 6.0},  # several: grouped by head
+    ],
+)
+def test_replace_goes_through_maps_of_entries(updates: dict[Any, Any]) -> None:
+    entries = GroupMap({"a": build_tree(Single, {}, {"only": 1})})
+    before = tree()
+    object.__setattr__(before, "single", entries)
+    after: Any = replace_values(before, updates)  # its single is a map of entries here
+    assert after.single["a"].only == 2 and entries["a"].only == 1
+    assert type(after.single) is GroupMap and after.single is not entries
