@@ -44,6 +44,10 @@ SWEEP_SECONDS = 1.0
 # A node asked for before discovery has told of it keeps its clients this long: a node
 # started a moment ago may take seconds to appear on a loaded machine.
 UNSEEN_GRACE_SECONDS = 60.0
+# The outcome of a set whose node left the graph before answering it.
+SET_ABANDONED = (
+    "the node left the graph before answering the set: whether it took effect is unknown"
+)
 NAMES_FRESH_SECONDS = 0.2  # how long a listing of the graph answers "is this node there?"
 
 
@@ -95,6 +99,7 @@ class Graph:
         self.sweeps = 0  # sweeps done so far
         self.readers: dict[str, ParameterReader] = {}
         self.setters: dict[str, Setter] = {}
+        self.unanswered: dict[str, set[Future]] = {}  # node -> sets it has not answered yet
         self.listing: tuple[float, Counter[str]] = (0.0, Counter())
         self.topics = SchemaTopics(
             self.node, self.lock, self.node_names, self.claimants, self.schema_arrived
@@ -189,6 +194,7 @@ class Graph:
         }
         gone_nodes, self.absent = gone & self.absent, gone
         for name in gone_nodes:
+            self.abandon_sets(name)
             self.forget(name)
             with self.lock:
                 self.seen.discard(name)
@@ -253,6 +259,17 @@ class Graph:
             if held is not None:
                 held.destroy()
 
+    def abandon_sets(self, node_name: str) -> None:
+        """End the sets a node left the graph without answering: their outcome is unknown.
+
+        rclpy never ends a call whose server went away; without this, a page would show
+        such a set as sent and not yet confirmed for as long as it stays open.
+        """
+        with self.lock:
+            futures = self.unanswered.pop(node_name, set())
+        for future in futures:
+            future.cancel()  # its done callback tells the outcome as a "set" event
+
     def services_ready(self, node_name: str, timeout: float) -> bool:
         return self.reader(node_name).wait_ready(timeout)
 
@@ -302,8 +319,12 @@ class Graph:
             set_id = working.set_id  # the name `working` is gone once the block ends
 
             def answered(done: Future) -> None:
+                with self.lock:
+                    self.unanswered.get(node_name, set()).discard(done)
                 self.dispatch(set_event(node_name, set_id, parameters, atomic, done))
 
+            with self.lock:
+                self.unanswered.setdefault(node_name, set()).add(working.future)
             working.future.add_done_callback(answered)
             raise
         return set_results(node_name, parameters, answer, atomic)
@@ -336,6 +357,11 @@ def set_event(
 ) -> dict[str, Any]:
     """The outcome of a set answered after the wait: its results, or why there are none."""
     event: dict[str, Any] = {"kind": "set", "node": node_name, "set": set_id}
+    if done.cancelled():
+        event["results"] = []
+        event["error"] = SET_ABANDONED
+        event["unknown"] = True  # not refused: the node may have made the change
+        return event
     try:
         event["results"] = set_results(node_name, parameters, done.result(), atomic)
     except Exception as exc:  # a cancelled call or an unusable answer: told, not raised

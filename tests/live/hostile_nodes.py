@@ -14,7 +14,10 @@ them. Kinds:
   writes how many times it ran to FILE.
 - ``gated:DIR``: declares ``counter`` (an int); its on-set callback for the value V waits
   until the file DIR/release_V exists, writes how many times it ran to DIR/count, and
-  refuses 13 (``13 is unlucky``).
+  refuses 13 (``13 is unlucky``); when DIR/leave_V appears first, the node leaves the graph
+  without answering.
+- ``gated_short:DIR``: declares ``counter``; its set_parameters service (not the atomic
+  one) waits for DIR/release_V as ``gated`` does, then answers two results for one value.
 - ``plain``: a plain node with ``gain`` (a double): for names of one's choosing (hidden ones).
 - ``dotted``: a plain node declaring ``a``, ``a.b`` and ``a.b.c``.
 """
@@ -36,8 +39,10 @@ from rcl_interfaces.msg import (
     ParameterValue,
     SetParametersResult,
 )
-from rcl_interfaces.srv import DescribeParameters, GetParameters, ListParameters
+from rcl_interfaces.srv import DescribeParameters, GetParameters, ListParameters, SetParameters
 from rclpy.node import Node
+from rclpy.parameter_service import ParameterService
+from rclpy.qos import qos_profile_parameters
 from std_msgs.msg import String
 
 from genparams.live.schema_topics import SCHEMA_QOS
@@ -129,13 +134,37 @@ def gated(name: str, workdir: Path) -> Node:
         (workdir / "count").write_text(str(calls[0]), encoding="utf-8")
         values = [p.value for p in parameters]
         gates = [workdir / f"release_{value}" for value in values]
+        leave = [workdir / f"leave_{value}" for value in values]
+        left: list[bool] = []
         while not all(gate.exists() for gate in gates) and node.context.ok():  # a stop ends it
+            if not left and any(gate.exists() for gate in leave):
+                node.destroy_node()  # leaves the graph, never to answer (until the stop)
+                left.append(True)
             time.sleep(0.05)
         if 13 in values:
             return SetParametersResult(successful=False, reason="13 is unlucky")
         return SetParametersResult(successful=True)
 
     node.add_on_set_parameters_callback(on_set)
+    return node
+
+
+def gated_short(name: str, workdir: Path) -> Node:
+    """rclpy's parameter services, but a set answered late and unusably (two results for one)."""
+    node = Node(name, start_parameter_services=False)
+    node.declare_parameter("counter", 0)
+    ParameterService(node)
+    service = f"{name}/set_parameters"  # rclpy's own, named relative to the node
+    node.destroy_service(next(s for s in node.services if s.srv_name == service))
+
+    def setting(request: Any, response: Any) -> Any:
+        gates = [workdir / f"release_{p.value.integer_value}" for p in request.parameters]
+        while not all(gate.exists() for gate in gates) and node.context.ok():  # a stop ends it
+            time.sleep(0.05)
+        response.results = [SetParametersResult(successful=True)] * (len(gates) + 1)
+        return response
+
+    node.create_service(SetParameters, service, setting, qos_profile=qos_profile_parameters)
     return node
 
 
@@ -174,6 +203,8 @@ def make(spec: str) -> Node:
         return slow(name, float(seconds), Path(path))
     if kind == "gated":
         return gated(name, Path(arg))
+    if kind == "gated_short":
+        return gated_short(name, Path(arg))
     if kind == "plain":
         return plain(name)
     if kind == "dotted":

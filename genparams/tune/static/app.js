@@ -100,7 +100,8 @@ function showVerdicts(check) {
   }
 }
 
-// Each row says where its value stands: checking, ok or refused (data-verdict).
+// Each row says where its value stands: checking, ok, refused, working (sent, not answered)
+// or unknown (its node left before answering) (data-verdict).
 function markRow(name, verdict) {
   const row = page.view?.form.querySelector(`[data-row="${CSS.escape(name)}"]`);
   if (row) row.dataset.verdict = verdict;
@@ -171,8 +172,10 @@ function onSetOutcome(event) {
   if (!sent || sent.node !== event.node) return;
   page.unconfirmed.delete(event.set);
   if (!page.view || event.node !== page.node) return;
-  if (event.error) {
-    for (const [name] of sent.edits) { markRow(name, "refused"); showNote(name, "data-param-note", ""); }
+  if (event.error) {  // no usable answer: refused, or unknown when the node left unanswering
+    const verdict = event.unknown ? "unknown" : "refused";
+    const said = event.unknown ? "outcome unknown: the node left before answering" : "";
+    for (const [name] of sent.edits) { markRow(name, verdict); showNote(name, "data-param-note", said); }
     status(`${event.node}: ${event.error}`);
     return;
   }
