@@ -17,7 +17,7 @@ from genparams.commands._importing import (
 )
 from genparams.errors import CommandError
 from genparams.importing import schema_text, write_outputs
-from genparams.paramsfile.node_sections import sections_for
+from genparams.paramsfile.node_sections import entries_in_force, sections_for
 from genparams.paramsfile.params_reader import read_params_file
 from genparams.rclpy_import.node_file import NodeFileError, import_node, node_name, scanned
 from genparams.rclpy_import.patch import patch_diff, unchanged_reason
@@ -94,7 +94,7 @@ def _overrides(files: list[Path], node: str | None) -> tuple[dict[str, Any], str
             raise CommandError(SchemaError(list(document.problems)))
         documents.append(document.sections)
     applied, _ = sections_for(documents, f"/{node}" if node else "/_")
-    values = {e.name: e.value for section in applied for e in section.entries}
+    values = {name: entry.value for name, (_, entry) in entries_in_force(applied).items()}
     return values, ", ".join(str(p) for p in files)
 
 

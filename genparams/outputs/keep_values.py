@@ -21,7 +21,7 @@ import yaml
 from genparams.errors import GenparamsError
 from genparams.outputs.yaml_text import key_text, node_key_text, value_text
 from genparams.paramsfile.node_rules import equal_values
-from genparams.paramsfile.node_sections import sections_for
+from genparams.paramsfile.node_sections import entries_in_force, sections_for
 from genparams.paramsfile.params_reader import ParamEntry, ParamsDocument, Section
 from genparams.runtime.core.types import TYPES
 from genparams.schema.errors import Location
@@ -82,14 +82,10 @@ def plan(
 def _winning_entries(
     files: Sequence[Sequence[Section]], documents: Sequence[ParamsDocument], node: str
 ) -> dict[str, tuple[ParamsDocument, ParamEntry]]:
-    """The entry that gives each name its value, later sections winning (rcl's order)."""
+    """The entry that gives each name its value, with the file it is in."""
     owner = {id(s): d for d in documents for s in d.sections}
-    applied, _ = sections_for(files, node)
-    found: dict[str, tuple[ParamsDocument, ParamEntry]] = {}
-    for section in applied:
-        for entry in section.entries:
-            found[entry.name] = (owner[id(section)], entry)
-    return found
+    in_force = entries_in_force(sections_for(files, node)[0])
+    return {name: (owner[id(section)], entry) for name, (section, entry) in in_force.items()}
 
 
 def apply(changes: Sequence[Change], texts: Mapping[str, str]) -> dict[str, str]:

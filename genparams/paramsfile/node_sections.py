@@ -16,12 +16,19 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from genparams.paramsfile.params_reader import Section
+from genparams.paramsfile.params_reader import ParamEntry, Section
 from genparams.paramsfile.ros_yaml import absolute, node_matches
 from genparams.runtime.core.naming import WILDCARD_ANY, WILDCARD_ONE
 from genparams.runtime.core.suggest import close_names, edit_distance, numbered_copies
 
-__all__ = ["Skipped", "edit_distance", "near_miss", "rcl_order", "sections_for"]
+__all__ = [
+    "Skipped",
+    "edit_distance",
+    "entries_in_force",
+    "near_miss",
+    "rcl_order",
+    "sections_for",
+]
 
 
 @dataclass(frozen=True)
@@ -54,6 +61,12 @@ def sections_for(
         reason = f"for another node (not {node})" if near is None else near
         skipped.append(Skipped(section, reason, near is not None))
     return applied, skipped
+
+
+def entries_in_force(applied: Sequence[Section]) -> dict[str, tuple[Section, ParamEntry]]:
+    """The entry that gives each name its value, and its section: of the sections
+    :func:`sections_for` applies, in that order, the last to write the name."""
+    return {entry.name: (section, entry) for section in applied for entry in section.entries}
 
 
 def near_miss(pattern: str, node: str) -> str | None:
