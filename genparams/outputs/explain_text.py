@@ -52,7 +52,7 @@ def text_report(explanation: Explanation) -> str:
 
 def _source(row: Row) -> str:
     if row.source is None:
-        return "required, not set"
+        return "optional, not set" if row.optional else "required, not set"
     owner = {"rclpy": " [rclpy]", "known": " [other code]", "nobody": " [unknown: ignored]"}
     return row.source.text + owner.get(row.owner, "")
 

@@ -54,6 +54,7 @@ class Row:
     source: Source | None  # None: required and not set
     shadowed: list[Source] = field(default_factory=list)
     owner: str = "schema"  # or "rclpy", "known" (other code), "nobody" (ignored), "unchecked"
+    optional: bool = False  # declared by type only: no value unless an override gives one
 
 
 @dataclass(frozen=True)
@@ -141,6 +142,8 @@ def explain(
             continue  # an old name
         if param.spec.required:
             rows[name] = Row(name, None, param.type.name, None)
+        elif param.spec.optional:
+            rows[name] = Row(name, None, param.type.name, None, optional=True)
         else:
             value = param.type.coerce_default(param.spec.default)
             rows[name] = Row(name, value, param.type.name, Source("default", value))

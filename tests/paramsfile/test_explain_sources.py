@@ -217,3 +217,28 @@ def test_a_prefixed_class_expands_its_mapped_entries_from_the_file(
         "left.max_speed      1.0        default",
         "left.mode           (not set)  required, not set",
     ]
+
+
+def test_an_optional_parameter_reads_not_set_until_a_file_gives_it(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    Path("optional.yaml").write_text(
+        "genparams: 1\nname: opt\ndescription: Optional ones.\nparameters:\n"
+        "  frame_id: {type: string, optional: true, description: Frame.}\n"
+        "  retries: {type: int, optional: true, description: Retries.}\n",
+        encoding="utf-8",
+    )
+    Path("retries.yaml").write_text("/arm:\n  ros__parameters:\n    retries: 3\n", encoding="utf-8")
+    code = main(["explain", "/arm", "--schema", "optional.yaml", "--params-file", "retries.yaml"])
+    out, err = capsys.readouterr()
+    assert (code, err) == (0, "")
+    assert out.splitlines() == [
+        "/arm: 1 section(s) apply, in rcl's order",
+        "parameter  value      source                   shadowed",
+        "frame_id   (not set)  optional, not set",
+        "retries    3          retries.yaml:3:5 (/arm)",
+    ]
+    code = main(["explain", "/arm", "--schema", "optional.yaml", "--format", "yaml"])
+    out, err = capsys.readouterr()
+    assert (code, err) == (0, "")
+    assert "frame_id" not in out and "retries" not in out  # a params file leaves unset ones out
