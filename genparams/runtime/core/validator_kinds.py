@@ -130,13 +130,11 @@ def _length(arg: Any, _type: str) -> Length:
 def _pattern(arg: Any, _type: str) -> Pattern:
     if not isinstance(arg, str):
         raise ValidatorArgumentError(f"pattern must be a string, got {fmt(arg)}")
-    import regex as engine  # on first use, as Pattern imports it
-
     try:
-        return Pattern(arg)
+        return Pattern(arg)  # its cost and syntax; the engine compiles it at its first match
     except PatternCostError as exc:
         raise ValidatorArgumentError(str(exc)) from None
-    except (re.error, engine.error) as exc:
+    except re.error as exc:
         raise ValidatorArgumentError(f"pattern {arg!r} is not a valid regex: {exc}") from None
 
 
@@ -198,3 +196,19 @@ KINDS: dict[str, ValidatorKind] = {
 def build_validator(rule: str, argument: Any, param_type: str) -> Validator:
     """Build one validator; raises ValidatorArgumentError or KeyError for unknown rules."""
     return KINDS[rule].build(argument, param_type)
+
+
+def checked_validator(rule: str, argument: Any, param_type: str) -> Validator:
+    """``build_validator``, and a pattern compiled by the engine that matches it, as a
+    schema's validators are checked: a node compiles a pattern only at its first match."""
+    built = build_validator(rule, argument, param_type)
+    if isinstance(built, Pattern):
+        import regex as engine
+
+        try:
+            built.compiled()
+        except engine.error as exc:
+            raise ValidatorArgumentError(
+                f"pattern {argument!r} is not a valid regex: {exc}"
+            ) from None
+    return built
