@@ -7,6 +7,7 @@ the validators themselves.
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 from collections.abc import Callable
@@ -138,7 +139,10 @@ def _pattern(arg: Any, _type: str) -> Pattern:
         raise ValidatorArgumentError(f"pattern {arg!r} is not a valid regex: {exc}") from None
 
 
-_CUSTOM_TARGET = re.compile(r"[A-Za-z_][\w]*(\.[A-Za-z_][\w]*)*:[A-Za-z_]\w*")
+@functools.cache
+def _custom_target() -> re.Pattern[str]:
+    """``package.module:function``, compiled with the first custom validator."""
+    return re.compile(r"[A-Za-z_][\w]*(\.[A-Za-z_][\w]*)*:[A-Za-z_]\w*")
 
 
 def _custom(arg: Any, _type: str) -> Custom:
@@ -148,7 +152,7 @@ def _custom(arg: Any, _type: str) -> Custom:
         target, args = arg["function"], arg.get("args", ())
         if not isinstance(args, (list, tuple)):
             raise ValidatorArgumentError(f"custom args must be a list, got {fmt(args)}")
-    if not isinstance(target, str) or not _CUSTOM_TARGET.fullmatch(target):
+    if not isinstance(target, str) or not _custom_target().fullmatch(target):
         raise ValidatorArgumentError(
             "custom takes 'package.module:function' or "
             f"{{function: 'package.module:function', args: [...]}}, got {fmt(arg)}"
