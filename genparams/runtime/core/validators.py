@@ -346,7 +346,8 @@ class Pattern(Record):
         """The engine's pattern, compiled on first use (a race compiles it twice, harmlessly).
 
         Raises the engine's error for the few patterns ``re`` reads and it refuses
-        (``[[:alpha:]]``, ``{s3``): a schema's patterns are compiled so when checked.
+        (``{s3``, ``[[::]]``): the generator and the reader of schema messages compile
+        every pattern so, to refuse those as they check.
         """
         found = self._compiled
         if found is None:
@@ -359,7 +360,7 @@ class Pattern(Record):
     def __call__(self, value: Any) -> str | None:
         try:
             compiled = self.compiled()  # before the clock starts: the first loads the engine
-        except Exception as exc:  # a schema read from a message was never checked: refuse
+        except Exception as exc:  # a pattern no generator checked (a spec built by hand)
             return f"cannot be matched against {self.regex!r} ({self.rule}): {exc}"
         items = (value,) if isinstance(value, str) else value
         # One time budget for the whole value: an array of many items shares it.
