@@ -24,7 +24,7 @@ from genparams.gpl.validation import (
 )
 from genparams.importing import EXACT, LEFT_OUT, Imported, Outcome, schema_name
 from genparams.runtime.core.types import TYPES, ValueTypeError
-from genparams.runtime.core.validator_kinds import KINDS, ValidatorArgumentError, build_validator
+from genparams.runtime.core.validator_kinds import KINDS, ValidatorArgumentError, checked_validator
 from genparams.schema.errors import SchemaProblem
 from genparams.schema.loader import LoadedDocument, Path, dotted
 
@@ -354,7 +354,7 @@ class _Importer:
             if rule == "custom" or rule not in KINDS:
                 continue
             try:
-                check = build_validator(rule, _frozen(argument), param_type.name)
+                check = checked_validator(rule, _frozen(argument), param_type.name)
             except (ValidatorArgumentError, KeyError):
                 continue
             reason = check(value)

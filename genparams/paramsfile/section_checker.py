@@ -10,7 +10,6 @@ frameworks may own them (check_params decides).
 
 from __future__ import annotations
 
-import dataclasses
 from collections.abc import Sequence
 from typing import Any
 
@@ -34,8 +33,7 @@ class SectionChecker:
         self.unknown_entries: list[ParamEntry] = []  # owned by nothing in this schema
         self.deprecated = {p.ros_name: p.deprecated for p in schema.parameters if p.deprecated}
         compiled = compiled_schema(schema)
-        self.compiled = dataclasses.replace(
-            compiled,
+        self.compiled = compiled.replaced(
             parameters={n: self.offline(p) for n, p in compiled.parameters.items()},
             templates={n: self.offline(p) for n, p in compiled.templates.items()},
         )
@@ -61,7 +59,7 @@ class SectionChecker:
                     )
                     continue
             kept.append(check)
-        return dataclasses.replace(param, checks=tuple(kept))
+        return param.replaced(checks=tuple(kept))
 
     def run(self, applied: Sequence[Section], nodes: Sequence[tuple[str, list[Section]]]) -> None:
         """Check the entries of ``applied``, then each node's required parameters and rules.

@@ -12,7 +12,7 @@ from typing import Any
 
 from genparams.runtime.core.suggest import did_you_mean
 from genparams.runtime.core.types import INT64_MAX, INT64_MIN, TYPES, ParamType, ValueTypeError
-from genparams.runtime.core.validator_kinds import KINDS, ValidatorArgumentError, build_validator
+from genparams.runtime.core.validator_kinds import KINDS, ValidatorArgumentError, checked_validator
 from genparams.runtime.core.validators import Bounds, Compare, RosRange, Validator
 from genparams.schema.loader import Path
 from genparams.schema.model import RangeSpec, ValidatorSpec
@@ -158,7 +158,7 @@ class LeafChecks:
             if rule in ("one_of", "subset_of") and isinstance(argument, tuple):
                 argument = self.typed_choices(path, argument, param_type)
             try:
-                build_validator(rule, argument, param_type.name)  # its argument errors, here
+                checked_validator(rule, argument, param_type.name)  # its argument errors, here
             except ValidatorArgumentError as exc:
                 self.report(path, str(exc))
                 continue

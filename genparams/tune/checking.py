@@ -26,7 +26,7 @@ mapped entries.
 from __future__ import annotations
 
 from collections.abc import Collection, Mapping, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from typing import Any
 
 from rcl_interfaces.msg import FloatingPointRange, IntegerRange, ParameterDescriptor
@@ -133,10 +133,9 @@ def compile_class(body: Mapping[str, Any], trusted: Sequence[str]) -> ClassCheck
 
     def runnable_here(param: CompiledParam) -> CompiledParam:
         checks = tuple(runnable(check, trusted) for check in param.checks)
-        return param if checks == param.checks else replace(param, checks=checks)
+        return param if checks == param.checks else param.replaced(checks=checks)
 
-    compiled = replace(
-        compiled,
+    compiled = compiled.replaced(
         parameters={n: runnable_here(p) for n, p in compiled.parameters.items()},
         templates={n: runnable_here(p) for n, p in compiled.templates.items()},
     )

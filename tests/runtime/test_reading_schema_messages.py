@@ -109,6 +109,11 @@ BAD_EDITS: list[tuple[str, Edit, str]] = [
         set_in_first_param(validators=[["pattern", "(?:x{2000}){2000}"]]),
         "(ceiling): pattern '(?:x{2000}){2000}' expands to more than 100,000 items",
     ),
+    (
+        "a pattern the matching engine refuses",
+        set_in_first_param(validators=[["pattern", "{s3"]]),
+        "(ceiling): expected } at position 2",
+    ),
     ("no default", lambda m: m["classes"][0]["parameters"][0].pop("default"), "no 'default'"),
     ("rules as object", lambda m: m["classes"][0].update(rules={}), "rules: expected a list"),
     (

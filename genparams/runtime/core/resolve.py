@@ -2,12 +2,44 @@
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable, Mapping
 from typing import Any
 
 from genparams.runtime.core.problems import ParameterProblem
 from genparams.runtime.core.spec import CompiledParam, CompiledSchema
 from genparams.runtime.core.types import ValueTypeError
+from genparams.runtime.core.validators import (
+    Bounds,
+    Compare,
+    Length,
+    NotEmpty,
+    OneOf,
+    Pattern,
+    RosRange,
+    SubsetOf,
+    Unique,
+)
+
+# The generator judged every default against these checks when it wrote the module (a
+# default one of them refuses is a schema error), and they are pure: they judge it so on
+# every node. A default is checked on the node only against the others: custom
+# validators (user code, which runs on the node only) and the checks the runtime adds
+# (the items of a for_each), and by the cross-parameter rules below. So a pattern's
+# engine loads only when a value from outside the schema is matched.
+_JUDGED_WHEN_GENERATED = frozenset(
+    {RosRange, OneOf, SubsetOf, Compare, Bounds, NotEmpty, Unique, Length, Pattern}
+)
+
+
+def default_problem(param: CompiledParam, value: Any) -> str | None:
+    """The first rule the default ``value`` breaks that the generator did not judge, or None."""
+    for check in param.checks:
+        if type(check) not in _JUDGED_WHEN_GENERATED:
+            reason = check(value)
+            if reason is not None:
+                return reason
+    return None
 
 
 def resolve_values(
@@ -43,7 +75,7 @@ def resolve_values(
             except ValueTypeError as exc:
                 problems.append(ParameterProblem(shown, f"{source} has the wrong type: {exc}"))
                 continue
-            origin = source
+            origin, judge = source, param.check
         elif param.spec.required:
             problems.append(
                 ParameterProblem(
@@ -58,7 +90,8 @@ def resolve_values(
             continue
         else:
             value, origin = param.type.coerce_default(param.spec.default), "default"
-        reason = param.check(value)
+            judge = functools.partial(default_problem, param)
+        reason = judge(value)
         if reason is not None:
             problems.append(ParameterProblem(shown, f"{origin} rejected: {reason}"))
             continue

@@ -13,6 +13,11 @@ if TYPE_CHECKING:
     from genparams.runtime.core.params_view import ParamsView
     from genparams.runtime.core.rules import CompiledRule
 
+    # The type of ``broken_rules``, for those that hold it.
+    RulesCheck = Callable[
+        [ParamsView, Mapping[str, Any], Callable[[str], str]], list[ParameterProblem]
+    ]
+
 
 class MergedValues(Mapping[str, Any]):
     """Proposed values over the committed ones, by relative ROS name; read lazily."""

@@ -20,7 +20,7 @@ from genparams.runtime.core.naming import ENTRY_KEY, strip_prefix
 from genparams.runtime.core.spec import ParamSpec, RuleSpec, SchemaSpec, compile_param
 from genparams.runtime.core.tree import Group
 from genparams.runtime.core.types import TYPES
-from genparams.runtime.core.validators import Custom
+from genparams.runtime.core.validators import Custom, Pattern
 
 FORMAT_VERSION = 1
 """The version of the schema message's shape: written by the node, checked by readers."""
@@ -203,7 +203,9 @@ def _check_parameter(described: dict[str, Any], where: str) -> None:
     if "default" not in described:
         raise _ShapeError(f"{where}: no 'default'")
     try:
-        compile_param(param_from_json(described, name))
+        for check in compile_param(param_from_json(described, name)).checks:
+            if isinstance(check, Pattern):
+                check.compiled()  # one the engine refuses is refused here, with the shape
     except KeyError as exc:  # build_validator's unknown rule
         raise _ShapeError(f"{where}: unknown validator {exc}") from None
     except Exception as exc:  # whatever a hostile argument makes a validator's builder raise

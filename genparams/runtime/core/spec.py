@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from collections.abc import Collection, Iterable, Mapping
-from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
 from genparams.runtime.core.naming import (
@@ -212,8 +211,7 @@ class EntryKeys(Record):
         return f"each item names an entry of {self.maps}: {ENTRY_KEY_RULE}; no repeats"
 
 
-@dataclass(frozen=True, eq=False, slots=True)
-class CompiledParam:
+class CompiledParam(Record):
     """A ParamSpec made ready for checking: type row, attribute path, validator objects.
 
     Compared and hashed by identity (one per parameter, cached with its schema):
@@ -221,6 +219,15 @@ class CompiledParam:
     Identity also lets a spec hold unhashable validator arguments (``length: {max: 12}``).
     """
 
+    _fields = (
+        "spec",
+        "type",
+        "attribute_path",
+        "checks",
+        "constraints_text",
+        "descriptor_description",
+    )
+    __slots__ = _fields
     spec: ParamSpec
     type: ParamType
     attribute_path: tuple[str, ...]
@@ -228,8 +235,31 @@ class CompiledParam:
     # The descriptor's texts, made once (and shared between parameters that read the same):
     # ``additional_constraints`` (``constraints`` less a scalar range, which travels in the
     # descriptor's own range fields) and the description with its unit.
-    constraints_text: str = ""
-    descriptor_description: str = ""
+    constraints_text: str
+    descriptor_description: str
+
+    def __init__(
+        self,
+        spec: ParamSpec,
+        type: ParamType,
+        attribute_path: tuple[str, ...],
+        checks: tuple[Validator, ...],
+        constraints_text: str = "",
+        descriptor_description: str = "",
+    ) -> None:
+        store(self, "spec", spec)
+        store(self, "type", type)
+        store(self, "attribute_path", attribute_path)
+        store(self, "checks", checks)
+        store(self, "constraints_text", constraints_text)
+        store(self, "descriptor_description", descriptor_description)
+
+    __eq__ = object.__eq__  # by identity, see above
+    __hash__ = object.__hash__
+
+    def replaced(self, **changes: Any) -> CompiledParam:
+        """A copy with ``changes`` (field name -> value), as dataclasses.replace makes."""
+        return CompiledParam(**{**dict(zip(self._fields, self._values(), strict=True)), **changes})
 
     @property
     def name(self) -> str:
@@ -293,14 +323,37 @@ def compile_param(spec: ParamSpec, extra_checks: tuple[Validator, ...] = ()) -> 
     )
 
 
-@dataclass(frozen=True)
-class CompiledSchema:
+class CompiledSchema(Record):
+    """A generated class's parameters made ready: compiled once per class (compile_schema)."""
+
+    _fields = ("spec", "parameters", "templates", "aliases", "rules", "rules_by_parameter")
+    __slots__ = _fields
     spec: SchemaSpec
     parameters: Mapping[str, CompiledParam]  # fixed parameters, by relative ROS name
-    templates: Mapping[str, CompiledParam] = field(default_factory=dict)  # "gains.*.p"
-    aliases: Mapping[str, str] = field(default_factory=dict)  # old name -> current name
-    rules: tuple[CompiledRule, ...] = ()
-    rules_by_parameter: Mapping[str, tuple[CompiledRule, ...]] = field(default_factory=dict)
+    templates: Mapping[str, CompiledParam]  # "gains.*.p"
+    aliases: Mapping[str, str]  # old name -> current name
+    rules: tuple[CompiledRule, ...]
+    rules_by_parameter: Mapping[str, tuple[CompiledRule, ...]]
+
+    def __init__(
+        self,
+        spec: SchemaSpec,
+        parameters: Mapping[str, CompiledParam],
+        templates: Mapping[str, CompiledParam] | None = None,
+        aliases: Mapping[str, str] | None = None,
+        rules: tuple[CompiledRule, ...] = (),
+        rules_by_parameter: Mapping[str, tuple[CompiledRule, ...]] | None = None,
+    ) -> None:
+        store(self, "spec", spec)
+        store(self, "parameters", parameters)
+        store(self, "templates", {} if templates is None else templates)
+        store(self, "aliases", {} if aliases is None else aliases)
+        store(self, "rules", rules)
+        store(self, "rules_by_parameter", {} if rules_by_parameter is None else rules_by_parameter)
+
+    def replaced(self, **changes: Any) -> CompiledSchema:
+        """A copy with ``changes`` (field name -> value), as dataclasses.replace makes."""
+        return CompiledSchema(**{**dict(zip(self._fields, self._values(), strict=True)), **changes})
 
     @property
     def adopted(self) -> frozenset[str]:
@@ -401,7 +454,7 @@ def _compile(spec: SchemaSpec) -> CompiledSchema:
             extra = (EntryKeys(", ".join(m or "the top level" for m in maps), taken),)
         compiled = compile_param(param_spec, extra)
         if in_place:
-            compiled = replace(compiled, attribute_path=attribute_path(param_spec.name, in_place))
+            compiled = compiled.replaced(attribute_path=attribute_path(param_spec.name, in_place))
         is_template = ENTRY_KEY in param_spec.name.split(".")
         (templates if is_template else parameters)[param_spec.name] = compiled
         aliases.update(dict.fromkeys(param_spec.aliases, param_spec.name))

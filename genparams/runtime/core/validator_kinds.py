@@ -7,6 +7,7 @@ the validators themselves.
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 from collections.abc import Callable
@@ -130,17 +131,18 @@ def _length(arg: Any, _type: str) -> Length:
 def _pattern(arg: Any, _type: str) -> Pattern:
     if not isinstance(arg, str):
         raise ValidatorArgumentError(f"pattern must be a string, got {fmt(arg)}")
-    import regex as engine  # on first use, as Pattern imports it
-
     try:
-        return Pattern(arg)
+        return Pattern(arg)  # its cost and syntax; the engine compiles it at its first match
     except PatternCostError as exc:
         raise ValidatorArgumentError(str(exc)) from None
-    except (re.error, engine.error) as exc:
+    except re.error as exc:
         raise ValidatorArgumentError(f"pattern {arg!r} is not a valid regex: {exc}") from None
 
 
-_CUSTOM_TARGET = re.compile(r"[A-Za-z_][\w]*(\.[A-Za-z_][\w]*)*:[A-Za-z_]\w*")
+@functools.cache
+def _custom_target() -> re.Pattern[str]:
+    """``package.module:function``, compiled with the first custom validator."""
+    return re.compile(r"[A-Za-z_][\w]*(\.[A-Za-z_][\w]*)*:[A-Za-z_]\w*")
 
 
 def _custom(arg: Any, _type: str) -> Custom:
@@ -150,7 +152,7 @@ def _custom(arg: Any, _type: str) -> Custom:
         target, args = arg["function"], arg.get("args", ())
         if not isinstance(args, (list, tuple)):
             raise ValidatorArgumentError(f"custom args must be a list, got {fmt(args)}")
-    if not isinstance(target, str) or not _CUSTOM_TARGET.fullmatch(target):
+    if not isinstance(target, str) or not _custom_target().fullmatch(target):
         raise ValidatorArgumentError(
             "custom takes 'package.module:function' or "
             f"{{function: 'package.module:function', args: [...]}}, got {fmt(arg)}"
@@ -198,3 +200,19 @@ KINDS: dict[str, ValidatorKind] = {
 def build_validator(rule: str, argument: Any, param_type: str) -> Validator:
     """Build one validator; raises ValidatorArgumentError or KeyError for unknown rules."""
     return KINDS[rule].build(argument, param_type)
+
+
+def checked_validator(rule: str, argument: Any, param_type: str) -> Validator:
+    """``build_validator``, and a pattern compiled by the engine that matches it, as a
+    schema's validators are checked: a node compiles a pattern only at its first match."""
+    built = build_validator(rule, argument, param_type)
+    if isinstance(built, Pattern):
+        import regex as engine
+
+        try:
+            built.compiled()
+        except engine.error as exc:
+            raise ValidatorArgumentError(
+                f"pattern {argument!r} is not a valid regex: {exc}"
+            ) from None
+    return built

@@ -321,24 +321,47 @@ PATTERN_TIMEOUT_S = 0.05
 
 
 class Pattern(Record):
-    """Python ``re`` syntax, matched by the ``regex`` module (its V0 mode) with a time limit."""
+    """Python ``re`` syntax, matched by the ``regex`` module (its V0 mode) with a time limit.
+
+    Built, it has checked the pattern's cost and its syntax (with ``re``, which every
+    process has loaded); the ``regex`` engine (about 10 ms to import) loads and compiles
+    the pattern when the first value is matched, so a node whose starting values need no
+    match never loads it.
+    """
 
     __slots__ = ("_compiled", "regex", "rule")
     _fields = ("regex", "rule")
     regex: str
     rule: str
-    _compiled: regex_engine.Pattern[str]
+    _compiled: regex_engine.Pattern[str] | None
 
     def __init__(self, regex: str, rule: str = "pattern") -> None:
         check_pattern_cost(regex)  # before any engine expands its counted repeats
         re.compile(regex)  # the syntax users write, with re's error messages
-        import regex as engine  # on first use: importing it costs a process ~10 ms
-
         store(self, "regex", regex)
         store(self, "rule", rule)
-        store(self, "_compiled", engine.compile(regex, flags=engine.V0))
+        store(self, "_compiled", None)
+
+    def compiled(self) -> regex_engine.Pattern[str]:
+        """The engine's pattern, compiled on first use (a race compiles it twice, harmlessly).
+
+        Raises the engine's error for the few patterns ``re`` reads and it refuses
+        (``{s3``, ``[[::]]``): the generator and the reader of schema messages compile
+        every pattern so, to refuse those as they check.
+        """
+        found = self._compiled
+        if found is None:
+            import regex as engine
+
+            found = engine.compile(self.regex, flags=engine.V0)
+            store(self, "_compiled", found)
+        return found
 
     def __call__(self, value: Any) -> str | None:
+        try:
+            compiled = self.compiled()  # before the clock starts: the first loads the engine
+        except Exception as exc:  # a pattern no generator checked (a spec built by hand)
+            return f"cannot be matched against {self.regex!r} ({self.rule}): {exc}"
         items = (value,) if isinstance(value, str) else value
         # One time budget for the whole value: an array of many items shares it.
         deadline = time.monotonic() + PATTERN_TIMEOUT_S
@@ -348,7 +371,7 @@ class Pattern(Record):
                 left = deadline - time.monotonic()
                 if left <= 0:
                     raise TimeoutError
-                found = self._compiled.search(item, timeout=left)
+                found = compiled.search(item, timeout=left)
             except TimeoutError:
                 return (
                     f"{where}could not be matched against {self.regex!r} ({self.rule}) within "

@@ -24,7 +24,6 @@ from genparams.runtime.core.errors import ParameterDeclarationError
 from genparams.runtime.core.naming import check_prefix, join_prefix, strip_prefix
 from genparams.runtime.core.params_view import ParamsView
 from genparams.runtime.core.problems import READ_ONLY, ParameterProblem
-from genparams.runtime.core.rule_check import broken_rules
 from genparams.runtime.core.spec import CompiledParam, compile_schema
 from genparams.runtime.core.tree import (
     build_tree,
@@ -38,10 +37,11 @@ from genparams.runtime.node.aliases import Aliases, old_names_by_current
 from genparams.runtime.node.consistency import NodeSets, node_sets
 from genparams.runtime.node.declaring import declare_batch, descriptor_for, ros_parameter
 from genparams.runtime.node.deprecation import DeprecationWatch, Notices, report_overrides
-from genparams.runtime.node.lifecycle import mutability_problem
 from genparams.runtime.node.overrides import OverrideReader
 
 if TYPE_CHECKING:
+    from genparams.runtime.core.rule_check import RulesCheck
+    from genparams.runtime.node.lifecycle import MutabilityCheck
     from genparams.runtime.node.mapped import EntryPlan, MappedEntries
 
 P = TypeVar("P", bound=ParamsView)
@@ -68,8 +68,9 @@ class Binding(Generic[P]):
         self.spare: P | None = None
         self.behind: dict[tuple[str, ...], Any] = {}
         self.mapped: MappedEntries | None = None
-        self.has_rules = False
-        self.has_configure_only = False
+        # Loaded only by a class that has rules, or configure-only parameters.
+        self.broken_rules: RulesCheck | None = None
+        self.mutability_problem: MutabilityCheck | None = None
         self.sets: NodeSets
         self.schema_name = ""
 
@@ -146,9 +147,15 @@ class Binding(Generic[P]):
         binding.sets = sets
         binding.schema_name = params_cls.__name__
         binding.old_names = {old: owned[cur] for old, cur in aliases.current_of.items()}
-        binding.has_rules = bool(compiled.rules)
+        if compiled.rules:
+            from genparams.runtime.core.rule_check import broken_rules
+
+            binding.broken_rules = broken_rules
         every = (*compiled.parameters.values(), *compiled.templates.values())
-        binding.has_configure_only = any(p.spec.configure_only for p in every)
+        if any(p.spec.configure_only for p in every):
+            from genparams.runtime.node.lifecycle import mutability_problem
+
+            binding.mutability_problem = mutability_problem
         binding.current = build_tree(
             params_cls, spec.groups, values, extra={"_binding": None}, maps=spec.maps
         )
@@ -189,11 +196,11 @@ class Binding(Generic[P]):
             return reasons
         if not typed:
             return typed
-        if self.has_configure_only and not declaring:
-            reasons = mutability_problem(self.node, typed, self.full_name)
-        if not reasons and self.has_rules:
+        if self.mutability_problem is not None and not declaring:
+            reasons = self.mutability_problem(self.node, typed, self.full_name)
+        if not reasons and self.broken_rules is not None:
             proposed = {param.name: value for param, value in typed.items()}
-            reasons = broken_rules(self.current, proposed, self.full_name)
+            reasons = self.broken_rules(self.current, proposed, self.full_name)
         return reasons or typed
 
     def full_name(self, name: str) -> str:

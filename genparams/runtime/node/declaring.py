@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from rcl_interfaces.msg import (
     FloatingPointRange,
@@ -17,9 +17,11 @@ from rclpy.parameter import Parameter
 
 from genparams.runtime.core.errors import ParameterDeclarationError
 from genparams.runtime.core.problems import ParameterProblem
-from genparams.runtime.core.rules import CompiledRule
 from genparams.runtime.core.spec import CompiledParam
 from genparams.runtime.node import rclpy_internals as internals
+
+if TYPE_CHECKING:
+    from genparams.runtime.core.rules import CompiledRule  # loaded with the first rule
 
 
 def descriptor_for(

@@ -24,7 +24,6 @@ from pathlib import Path
 
 from rclpy.node import Node
 
-from genparams.runtime.core.suggest import did_you_mean_name, edit_distance, numbered_copies
 from genparams.runtime.node.rclpy_internals import parameter_overrides
 
 PARAMS_KEY = "ros__parameters"
@@ -41,6 +40,8 @@ def warn_ignored(
     names (for the hint), ``declares``: whether the class owns a full name."""
     logger = node.get_logger()
     for name in unowned_overrides(node, prefix, declares):
+        from genparams.runtime.core.suggest import did_you_mean_name  # with the first slip
+
         hint = did_you_mean_name(name, owned)
         logger.warning(
             f"parameter override {name!r} is owned by no parameter of this node{hint}: "
@@ -74,6 +75,8 @@ def unowned_overrides(node: Node, prefix: str, declares: Callable[[str], bool]) 
 
 def one_slip(written: str, meant: str) -> bool:
     """One edit apart, and not numbered copies (``/robot_1/cam``, ``/robot_2/cam``)."""
+    from genparams.runtime.core.suggest import edit_distance, numbered_copies  # with a file
+
     return edit_distance(written, meant) == 1 and not numbered_copies(written, meant)
 
 

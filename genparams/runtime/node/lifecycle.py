@@ -23,6 +23,11 @@ if TYPE_CHECKING:
 
     from genparams.runtime.core.spec import CompiledParam
 
+    # The type of ``mutability_problem``, for those that hold it.
+    MutabilityCheck = Callable[
+        [Node, Mapping[CompiledParam, Any], Callable[[str], str]], list[ParameterProblem]
+    ]
+
 CONFIGURE_STATES = frozenset({"unconfigured", "inactive", "configuring", "cleaningup"})
 
 
