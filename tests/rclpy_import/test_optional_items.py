@@ -65,8 +65,10 @@ def test_the_generated_class_declares_what_the_node_declares(
     fresh = ros.node(args=args)
     getattr(module, class_name("goal_publisher")).declare(fresh)
     ours = {n: (without_item_rule(d), v) for n, (d, v) in declared(fresh).items()}
-    assert sorted(ours) == sorted(hand) == sorted(
-        ["goals", "arms", "home", "dock", "gains.left.p", "gains.left.i"]
+    assert (
+        sorted(ours)
+        == sorted(hand)
+        == sorted(["goals", "arms", "home", "dock", "gains.left.p", "gains.left.i"])
     )
     for name in hand:
         assert ours[name] == hand[name], name
@@ -76,8 +78,8 @@ def test_items_naming_a_parameter_and_a_group_keep_the_group(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     text = NODE.replace(
-        '            self.declare_parameter(goal, rclpy.Parameter.Type.DOUBLE_ARRAY)\n',
-        '            self.declare_parameter(goal, rclpy.Parameter.Type.DOUBLE_ARRAY)\n'
+        "            self.declare_parameter(goal, rclpy.Parameter.Type.DOUBLE_ARRAY)\n",
+        "            self.declare_parameter(goal, rclpy.Parameter.Type.DOUBLE_ARRAY)\n"
         '            self.declare_parameter(f"{goal}.speed", 1.0)\n',
     )
     schema, err = imported(tmp_path, text, capsys)
