@@ -30,7 +30,7 @@ import sys
 import tempfile
 import threading
 from collections.abc import Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
@@ -45,6 +45,9 @@ from tests.rclpy_import.declared import schema_key
 
 MANIFEST = Path(__file__).parent / "import_rates_data" / "nodes.yaml"
 RUN_TIMEOUT = 120
+# How a node's own run ends once its constructor is done: it spins, or is still running
+# when its time is up (bench.import_rates_node), or returns.
+FINISHED = ("", "spin", "Stopped: timer")
 # What a node's import and its run read: the repository's files of these kinds (a mirror
 # may lack its largest files, images and meshes, which git archive cannot then export).
 EXPORTED = (".py", ".yaml", ".yml", ".xml", ".cfg", ".toml", ".json", ".txt")
@@ -70,12 +73,13 @@ class Measured:
     left_out: int = 0
     differ: tuple[str, ...] = ()  # exact by the import, declared otherwise on a real node
     node_only: tuple[str, ...] = ()  # declared by the node's own run, not by the class
+    class_only: tuple[str, ...] = ()  # declared by the class, not by the node's finished run
     crash: str = ""
     refused: str = ""  # a clean refusal (no declaration found): nothing imported
 
 
-def entries(sample: str) -> list[Entry]:
-    data = yaml.safe_load(MANIFEST.read_text("utf-8"))
+def entries(sample: str, manifest: Path = MANIFEST) -> list[Entry]:
+    data = yaml.safe_load(manifest.read_text("utf-8"))
     chosen = ["table", "wide"] if sample == "all" else [sample]
     return [
         Entry(s, item["repo"], item["commit"], item["file"], item.get("class"), item.get("params"))
@@ -202,27 +206,36 @@ def measure(
         module = work / f"{imported.name}_params.py"
         module.write_text(genparams.generate(schema), encoding="utf-8")
     except Exception as exc:  # the schema written or its module: a crash
-        return Measured(**{**counts.__dict__, "crash": f"generate: {type(exc).__name__}: {exc}"})
+        return replace(counts, crash=f"generate: {type(exc).__name__}: {exc}")
     name = node.get("node") or node_name(result.unit) or imported.name
     args = ["generated", str(module), class_name(imported.name), name]
     launched_with = launch_params or params
     ours = _child([*args, *(["--params-file", str(launched_with)] if launched_with else [])])
     if ours.get("stopped"):
-        return Measured(**{**counts.__dict__, "crash": f"declare: {ours['stopped']}"})
-    return _compared(counts, imported.outcomes, ours["declared"], node.get("declared", {}))
+        return replace(counts, crash=f"declare: {ours['stopped']}")
+    return _compared(counts, imported.outcomes, ours["declared"], node)
 
 
 def _compared(
-    counts: Measured, outcomes: Any, ours: dict[str, Any], theirs: dict[str, Any]
+    counts: Measured, outcomes: Any, ours: dict[str, Any], node: dict[str, Any]
 ) -> Measured:
-    """Exact outcomes a real node contradicts are not exact."""
+    """Exact outcomes a real node contradicts are not exact: a parameter the class
+    declares otherwise than the node's own run, or one it declares that the run, having
+    finished its constructor, does not."""
+    theirs: dict[str, Any] = node.get("declared", {})
     exact_keys = {o.key for o in outcomes if o.fate == EXACT and o.key}
     differ = sorted(n for n in set(ours) & set(theirs) if ours[n] != theirs[n]
                     and schema_key(exact_keys, n) is not None)  # fmt: skip
-    wrong_keys = {schema_key(exact_keys, n) for n in differ}
-    node_only = tuple(sorted(set(theirs) - set(ours)))
-    return Measured(**{**counts.__dict__, "exact": counts.exact - len(wrong_keys),
-                       "differ": tuple(differ), "node_only": node_only})  # fmt: skip
+    finished = node.get("node") is not None and node.get("stopped", "") in FINISHED
+    class_only = sorted(set(ours) - set(theirs)) if finished else []
+    wrong = [n for n in [*differ, *class_only] if schema_key(exact_keys, n) is not None]
+    return replace(
+        counts,
+        exact=counts.exact - len({schema_key(exact_keys, n) for n in wrong}),
+        differ=tuple(differ),
+        class_only=tuple(class_only),
+        node_only=tuple(sorted(set(theirs) - set(ours))),
+    )
 
 
 def alone(file: Path, into: Path) -> Path:
@@ -262,13 +275,14 @@ def main(argv: list[str] | None = None) -> int:
 
     parser = argparse.ArgumentParser(prog="python -m bench.import_rates", description=__doc__)
     parser.add_argument("--mirrors", type=Path, required=True, metavar="DIR")
+    parser.add_argument("--manifest", type=Path, default=MANIFEST, metavar="FILE")
     parser.add_argument("--sample", choices=["table", "wide", "all"], default="all")
     parser.add_argument("--only", default="", help="only entries whose file contains TEXT")
     parser.add_argument("--details", action="store_true", help="list differing names")
     args = parser.parse_args(argv)
     if "ROS_DOMAIN_ID" not in os.environ:  # the nodes' runs: a domain no other run shares
         os.environ["ROS_DOMAIN_ID"] = str(hold_free_domain())
-    chosen = [e for e in entries(args.sample) if args.only in e.file]
+    chosen = [e for e in entries(args.sample, args.manifest) if args.only in e.file]
     measured = []
     for row in rows(args.mirrors, chosen):
         measured.append(row)

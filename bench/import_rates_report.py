@@ -72,6 +72,10 @@ def _details(rows: Sequence[Row]) -> str:
             if measured.differ:
                 lines.append(f"- {row.entry.file} ({kind}): declared otherwise on a real "
                              f"node: {', '.join(measured.differ)}\n")  # fmt: skip
+            if measured.class_only:
+                names = ", ".join(measured.class_only)
+                lines.append(f"- {row.entry.file} ({kind}): declared by the class only, not "
+                             f"by the node's finished run: {names}\n")  # fmt: skip
             if measured.node_only:
                 lines.append(f"- {row.entry.file} ({kind}): declared by the node's own run "
                              f"only: {', '.join(measured.node_only)}\n")  # fmt: skip
