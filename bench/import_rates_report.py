@@ -23,8 +23,10 @@ def _node_run(row: Row) -> str:
     declared = len(row.node.get("declared", {}))
     stopped = row.node.get("stopped", "")
     run = f"{declared} declared"
-    if stopped and stopped != "spin":
-        run += f", stopped: {stopped}".replace("|", "/")
+    if stopped == "Stopped: timer":
+        run += ", still running at its time limit"
+    elif stopped and stopped != "spin":  # the exception's kind; --details gives it whole
+        run += f", stopped by {stopped.partition(':')[0]}"
     return run
 
 
@@ -68,6 +70,9 @@ def _total(label: str, rows: Sequence[Row]) -> str:
 def _details(rows: Sequence[Row]) -> str:
     lines = []
     for row in rows:
+        stopped = row.node.get("stopped", "")
+        if stopped and stopped not in ("spin", "Stopped: timer"):
+            lines.append(f"- {row.entry.file}: the node's own run stopped: {stopped}\n")
         for kind, measured in (("file by file", row.by_file), ("whole", row.whole)):
             if measured.differ:
                 lines.append(f"- {row.entry.file} ({kind}): declared otherwise on a real "
