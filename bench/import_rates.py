@@ -104,8 +104,8 @@ def export(mirrors: Path, entry: Entry, into: Path) -> Path:
     listing = subprocess.run([*git, "ls-tree", "-r", "-z", entry.commit], capture_output=True,
                              check=True).stdout.decode().split("\0")  # fmt: skip
     blobs = [line.split("\t", 1) for line in listing if line]
-    wanted = [(meta.split()[2], path) for meta, path in blobs
-              if meta.split()[1] == "blob" and path.endswith(EXPORTED)]  # fmt: skip
+    wanted = [(meta.split()[2], path) for meta, path in blobs  # regular files only
+              if meta.split()[0] in ("100644", "100755") and path.endswith(EXPORTED)]  # fmt: skip
     request = "".join(f"{sha}\n" for sha, _ in wanted).encode()
     batch = subprocess.run([*git, "cat-file", "--batch"], input=request, capture_output=True,
                            check=True).stdout  # fmt: skip
