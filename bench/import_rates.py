@@ -38,7 +38,7 @@ import yaml
 
 import genparams
 from genparams.importing import APPROXIMATE, EXACT, LEFT_OUT, schema_text
-from genparams.rclpy_import.node_file import NodeFileError, import_node, node_name
+from genparams.rclpy_import.node_file import NodeFileError, import_node, node_name, scanned
 from genparams.runtime.core.naming import class_name
 from tests.domains import hold_free_domain
 from tests.rclpy_import.declared import schema_key
@@ -183,9 +183,9 @@ def measure(
         text = file.read_text("utf-8")
         overrides: dict[str, Any] = {}
         given_by = ""
-        if params is not None:
-            name = node.get("node") or "_"
-            overrides, given_by = _overrides([params], name)
+        if params is not None:  # as the command reads it: the section of the node's name
+            _, unit = scanned(text, str(file), entry.cls)
+            overrides, given_by = _overrides([params], node_name(unit))
         result = import_node(text, str(file), entry.cls, overrides, given_by)
     except NodeFileError as exc:
         return Measured(refused=str(exc).rpartition(": ")[2])
