@@ -120,3 +120,23 @@ def test_a_refused_change_of_keys_declares_nothing(
     names = set(node.list_parameters([], 0).names)
     assert "pick" not in names and {"home", "dock"} <= names
     assert params.goals == ("home", "dock")
+
+
+def test_entries_declared_by_type_are_undeclared_again_when_the_removal_is_refused(
+    ros: RosHarness, module: types.ModuleType
+) -> None:
+    """The entries declared by type only go in a round before the change that removes the
+    old keys; a callback refusing that change alone leaves none of them behind."""
+    node = ros.node()
+    params = module.WaypointsParams.declare(node)
+
+    def refuse_a_removal_alone(parameters: list[Parameter]) -> SetParametersResult:
+        names = {p.name for p in parameters}
+        alone = "dock" in names and "pick" not in names
+        return SetParametersResult(successful=not alone, reason="dock stays")
+
+    node.add_on_set_parameters_callback(refuse_a_removal_alone)
+    node.set_parameters([Parameter("goals", value=["home", "pick"])])
+    names = set(node.list_parameters([], 0).names)
+    assert "pick" not in names and {"home", "dock"} <= names
+    assert params["dock"] is None
