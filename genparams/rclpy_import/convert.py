@@ -323,9 +323,9 @@ class _Converter:
             self.warn(at, shown, f"{problem}: parameter left out")
             return None
         if place is not None and not place.tail and place.group in self.item_groups:
-            self.warn(at, shown, f"the items of {found.runtime_loop} also name groups of "
-                      "parameters declared in the same loop: a schema name is a parameter or "
-                      "a group, not both: parameter left out")  # fmt: skip
+            self.warn(at, shown, f"its schema key {place.key!r} also holds a mapped group "
+                      "the node declares: a schema key is a parameter or a group, not both: "
+                      "parameter left out")  # fmt: skip
             return None
         return leaf, when, bool(from_item)
 

@@ -85,5 +85,5 @@ def test_items_naming_a_parameter_and_a_group_keep_the_group(
     schema, err = imported(tmp_path, text, capsys)
     parameters = yaml.safe_load(schema.read_text("utf-8"))["parameters"]
     assert parameters["*"] == {"for_each": "goals", "speed": {"type": "double", "default": 1.0}}
-    assert "{goal}: warning: the items of" in err and "also name groups of" in err
-    assert "a schema name is a parameter or a group, not both: parameter left out" in err
+    assert "{goal}: warning: its schema key '*' also holds a mapped group" in err
+    assert "a schema key is a parameter or a group, not both: parameter left out" in err
