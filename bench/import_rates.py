@@ -48,6 +48,7 @@ RUN_TIMEOUT = 120
 # How a node's own run ends once its constructor is done: it spins, or is still running
 # when its time is up (bench.import_rates_node), or returns.
 FINISHED = ("", "spin", "Stopped: timer")
+SCRIPT_DOMAINS = range(101, 200)  # tests/domains.py: scripts' own, apart from test runs
 # What a node's import and its run read: the repository's files of these kinds (a mirror
 # may lack its largest files, images and meshes, which git archive cannot then export).
 EXPORTED = (".py", ".yaml", ".yml", ".xml", ".cfg", ".toml", ".json", ".txt")
@@ -281,7 +282,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--details", action="store_true", help="list differing names")
     args = parser.parse_args(argv)
     if "ROS_DOMAIN_ID" not in os.environ:  # the nodes' runs: a domain no other run shares
-        os.environ["ROS_DOMAIN_ID"] = str(hold_free_domain())
+        os.environ["ROS_DOMAIN_ID"] = str(hold_free_domain(SCRIPT_DOMAINS))
     chosen = [e for e in entries(args.sample, args.manifest) if args.only in e.file]
     measured = []
     for row in rows(args.mirrors, chosen):
