@@ -34,7 +34,7 @@ def _by_file(measured: Measured) -> str:
     if measured.crash:
         return f"crash: {measured.crash}"
     if measured.refused:
-        return f"0 of 0 ({measured.refused})"
+        return f"0 of 0 ({measured.refused.partition(' (')[0]})"  # the import refused
     return f"{measured.exact} of {measured.parameters}"
 
 
