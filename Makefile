@@ -9,7 +9,7 @@ PYTHON := $(VENV)/bin/python
 EXAMPLE := examples/camera_node
 
 
-.PHONY: venv lock test-latest browser demo import-node-demo demo-arm tour test check lint typecheck golden screenshots docs bench bench-targets bench-quick bench-profile soak mutate mutate-sample clean
+.PHONY: venv lock test-latest browser demo import-node-demo demo-arm tour test check lint typecheck golden screenshots docs bench bench-targets bench-quick bench-profile import-rates soak mutate mutate-sample clean
 
 # The development environment installs from requirements/dev.txt: every package of every
 # extra, the build backend (hatchling, editables) and the dev tools, pinned with their hashes
@@ -118,6 +118,12 @@ bench-quick: venv
 ## Where the time of a declare and of one set goes, at 100 and 1,000 parameters (docs/benchmarks-profile.md).
 bench-profile: venv
 	$(PYTHON) -m bench.profile
+
+## import-rclpy's exact-import rate on public rclpy nodes (docs/migrating-from-rclpy.md#measuring-it-again).
+## MIRRORS=DIR: bare git copies of the repositories bench/import_rates_data/nodes.yaml names.
+import-rates: venv
+	$(if $(MIRRORS),,$(error set MIRRORS=DIR, a folder of owner+name git copies))
+	$(PYTHON) -m bench.import_rates --mirrors $(MIRRORS) --details
 
 ## Mutation testing of the runtime and check-params with mutmut (docs/robustness.md); MODULES=... picks some.
 ## Results persist in mutants/, so a stopped run resumes; survivors are retried after the first pass.

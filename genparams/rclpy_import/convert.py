@@ -18,6 +18,7 @@ from __future__ import annotations
 import ast
 from collections.abc import Mapping
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Any
 
 from genparams.importing import APPROXIMATE, EXACT, LEFT_OUT, Fate, Imported, Outcome, schema_name
@@ -262,6 +263,13 @@ class _Converter:
         leaf, when, from_item = checked
         return self.placed(found, name, place, shown, leaf, when, from_item)
 
+    @cached_property
+    def item_groups(self) -> frozenset[str]:
+        """The keys whose items also name mapped groups of the node's declarations:
+        ``*`` for ``f"{goal}.positions"``, ``gains`` for ``f"gains.{joint}.p"``."""
+        places = (item_place(f) for f in self.unit.found if f.runtime_loop is not None)
+        return frozenset(p.group for p in places if p is not None and p.tail)
+
     def named(self, found: Found) -> tuple[str, ItemPlace | None] | None:
         """The schema key of a declaration, and where a loop's item sits in it; None (with
         a warning) when it has none."""
@@ -314,9 +322,10 @@ class _Converter:
         if leaf is None:
             self.warn(at, shown, f"{problem}: parameter left out")
             return None
-        if place is not None and leaf.get("optional"):
-            self.warn(at, shown, f"one parameter per item of {found.runtime_loop}, with no value: "
-                      f"{place.what} needs one: parameter left out")  # fmt: skip
+        if place is not None and not place.tail and place.group in self.item_groups:
+            self.warn(at, shown, f"its schema key {place.key!r} also holds a mapped group "
+                      "the node declares: a schema key is a parameter or a group, not both: "
+                      "parameter left out")  # fmt: skip
             return None
         return leaf, when, bool(from_item)
 

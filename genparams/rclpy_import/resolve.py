@@ -10,6 +10,7 @@ where it was written.
 from __future__ import annotations
 
 import ast
+from collections.abc import Iterator
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
@@ -97,12 +98,13 @@ class Resolver:
 
     def _build(self, path: Path, tree: ast.Module, source: SourceFile, depth: int) -> ModuleView:
         view = ModuleView(path, tree, source, dict(constants(tree.body)))
-        for statement in tree.body:
+        statements = list(module_level(tree.body))
+        for statement in statements:
             if isinstance(statement, ast.ClassDef):
                 view.classes[statement.name] = ClassFound(statement, view)
             elif isinstance(statement, ast.FunctionDef):
                 view.functions[statement.name] = FunctionFound(statement, view)
-        for statement in tree.body:
+        for statement in statements:
             if isinstance(statement, ast.ImportFrom):
                 self._import_from(view, statement, depth)
             elif isinstance(statement, ast.Import):
@@ -135,6 +137,22 @@ class Resolver:
             other = self._view(target, depth + 1) if target is not None else None
             if other is not None:
                 _namespace(view, alias.asname or alias.name, other)
+
+
+def module_level(body: list[ast.stmt]) -> Iterator[ast.stmt]:
+    """A module's statements, with those of its top-level ``if``/``else`` and ``try``
+    blocks (``if ROS_VERSION == 2: class CompatibleNode(Node): ...``, ``try: from x
+    import y``) read as if each ran, in source order: a later definition of a name
+    stands."""
+    for statement in body:
+        if isinstance(statement, ast.If):
+            yield from module_level([*statement.body, *statement.orelse])
+        elif isinstance(statement, ast.Try):
+            handlers = [s for h in statement.handlers for s in h.body]
+            yield from module_level([*statement.body, *handlers, *statement.orelse,
+                                     *statement.finalbody])  # fmt: skip
+        else:
+            yield statement
 
 
 def _take(view: ModuleView, local: str, other: ModuleView, name: str) -> bool:

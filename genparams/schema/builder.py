@@ -378,12 +378,6 @@ class _ModelBuilder:
 
     def check_optional(self, parameter: Parameter, doc_path: Path) -> None:
         """What an optional parameter cannot be combined with."""
-        if naming.ENTRY_KEY in parameter.path:
-            self.problem(
-                (*doc_path, "optional"),
-                "optional is not supported inside a mapped group: give the parameter a default",
-                at_key=True,
-            )
         if parameter.aliases:
             self.problem(
                 (*doc_path, "optional"),

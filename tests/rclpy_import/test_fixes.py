@@ -256,3 +256,54 @@ def test_the_patch_drops_a_variable_that_only_named_a_declaration(
             check=False,
         )
         assert lint.returncode == 0, lint.stdout
+
+
+def test_a_base_class_defined_under_a_module_level_if_is_followed(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A compatibility package beside the node's defines its node class once per ROS
+    version, under ``if``/``elif`` at module level; another name comes in a ``try``."""
+    compat = tmp_path / "bridge_compat"
+    (compat / "src" / "bridge_compat").mkdir(parents=True)
+    (compat / "package.xml").write_text("<package/>\n", encoding="utf-8")
+    (compat / "src" / "bridge_compat" / "__init__.py").write_text("", encoding="utf-8")
+    (compat / "src" / "bridge_compat" / "node.py").write_text(
+        "import os\n\n"
+        "try:\n"
+        "    DEFAULT_RATE = float(os.environ['RATE'])\n"
+        "except KeyError:\n"
+        "    DEFAULT_RATE = 20.0\n\n"
+        "if os.environ.get('ROS_VERSION') == '1':\n"
+        "    class BridgeNode(object):\n"
+        "        def get_param(self, name, default):\n"
+        "            return default\n"
+        "elif os.environ.get('ROS_VERSION') == '2':\n"
+        "    from rclpy.node import Node\n\n"
+        "    class BridgeNode(Node):\n"
+        "        def __init__(self, name):\n"
+        "            super().__init__(name)\n"
+        "            self.declare_parameter('rate', 20.0)\n\n"
+        "        def get_param(self, name, default):\n"
+        "            return self.declare_parameter(name, default).value\n",
+        encoding="utf-8",
+    )
+    node_package = tmp_path / "bridge_tools"
+    (node_package / "bridge_tools").mkdir(parents=True)
+    (node_package / "package.xml").write_text("<package/>\n", encoding="utf-8")
+    (node_package / "bridge_tools" / "__init__.py").write_text("", encoding="utf-8")
+    source = node_package / "bridge_tools" / "relay.py"
+    source.write_text(
+        "from bridge_compat.node import BridgeNode\n\n\n"
+        "class Relay(BridgeNode):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('relay')\n"
+        "        self.topic = self.get_param('topic', '/relay')\n",
+        encoding="utf-8",
+    )
+    code, out, err = run(capsys, str(source))
+    assert code == 0, err
+    parameters = yaml.safe_load(out)["parameters"]
+    assert parameters == {
+        "rate": {"type": "double", "default": 20.0},
+        "topic": {"type": "string", "default": "/relay"},
+    }

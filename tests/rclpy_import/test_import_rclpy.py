@@ -299,11 +299,6 @@ if self.get_parameter('scale').value in [1, 2.5]:
             "    self.declare_parameter(f'gain_{j}.x', 1.0)",
             "only a name holding the item as one whole part between dots translates",
         ),
-        (  # a per-item parameter with no value: optional has no per-item form
-            "self.declare_parameter('js', ['a'])\nfor j in self.get_parameter('js').value:\n"
-            "    self.declare_parameter('x.' + j)",
-            "with no value: a per-item parameter needs one",
-        ),
         (
             "self.declare_parameter('x', Parameter.Type.INTEGER, "
             "ParameterDescriptor(dynamic_typing=True))",
@@ -395,13 +390,6 @@ GP = "for j in self.get_parameter('js').value:\n    self.declare_parameter(f'g.{
             "    self.declare_parameter(f'g.x.{k}.q', 1.0)",
             "'g' holds one entry per item of 'js': a mapped group inside it is not written",
             {"for_each": "js", "p": {"type": "double", "default": 1.0}},
-        ),
-        (  # a parameter of an entry with no value
-            f"{JS}for j in self.get_parameter('js').value:\n"
-            "    self.declare_parameter(f'g.{j}.p', Parameter.Type.DOUBLE)",
-            "g.*.p: warning: one parameter per item of self.get_parameter('js').value, with no "
-            "value: a parameter of a mapped group needs one",
-            None,
         ),
         (  # under a condition
             f"{JS}self.declare_parameter('on', True)\n"

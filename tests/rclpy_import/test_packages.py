@@ -16,7 +16,7 @@ import yaml
 
 from genparams.cli import main
 from genparams.runtime.core.naming import class_name
-from tests.rclpy_import.test_real_nodes import declared
+from tests.rclpy_import.declared import declared
 from tests.support import RosHarness, load_generated
 
 PACKAGES = Path(__file__).resolve().parent / "packages"

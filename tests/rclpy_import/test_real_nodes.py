@@ -10,10 +10,8 @@ import subprocess
 import sys
 import types
 from pathlib import Path
-from typing import Any
 
 import pytest
-from rcl_interfaces.msg import ParameterDescriptor
 from rclpy.node import Node
 
 import genparams
@@ -22,12 +20,10 @@ from genparams.outputs.schema_yaml import schema_yaml
 from genparams.rclpy_import.found import Found
 from genparams.rclpy_import.node_file import ImportedNode, import_node
 from genparams.rclpy_import.patch import patched_source
-from genparams.runtime.core.naming import NODE_PARAMETERS, class_name, module_name
+from genparams.runtime.core.naming import class_name, module_name
 from tests.rclpy_import.cases import CASES, CLASSES, GOLDEN, NODES, Case
+from tests.rclpy_import.declared import declared, schema_key, without_item_rule
 from tests.support import RosHarness, import_file, load_generated
-
-DESCRIPTOR_FIELDS = ("name", "type", "description", "additional_constraints", "read_only",
-                     "dynamic_typing")  # fmt: skip
 
 
 def imported(case: Case) -> ImportedNode:
@@ -43,42 +39,6 @@ def hand_written(ros: RosHarness, case: Case, module: types.ModuleType) -> Node:
         return node
     cli_args = ["--ros-args", *case.ros_args] if case.params else None
     return ros.add_node(getattr(module, CLASSES[case.name])(context=ros.context, cli_args=cli_args))
-
-
-def declared(node: Node) -> dict[str, tuple[tuple[Any, ...], Any]]:
-    """Every parameter the node's code declared: its descriptor as a tuple, and its value."""
-    names = [n for n in node.list_parameters([], 0).names if n not in NODE_PARAMETERS]
-    descriptors = node.describe_parameters(names)
-    # not get_parameter: it raises for a parameter declared by type only and never set
-    values = [node._parameters[n].value for n in names]
-    return {n: (_fields(d), _plain(v)) for n, d, v in zip(names, descriptors, values, strict=True)}
-
-
-def _fields(descriptor: ParameterDescriptor) -> tuple[Any, ...]:
-    ranges = tuple(
-        (kind, r.from_value, r.to_value, r.step)
-        for kind in ("floating_point_range", "integer_range")
-        for r in getattr(descriptor, kind)
-    )
-    return (*(getattr(descriptor, f) for f in DESCRIPTOR_FIELDS), ranges)
-
-
-ITEM_RULE = "each item names an entry of "
-
-
-def _without_item_rule(descriptor: tuple[Any, ...]) -> tuple[Any, ...]:
-    """A key list of per-item parameters states the rule genparams adds (its items must
-    name entries) in its additional_constraints, before the node's own text: without it."""
-    constraints = DESCRIPTOR_FIELDS.index("additional_constraints")
-    text = descriptor[constraints]
-    if text.startswith(ITEM_RULE):
-        text = text.partition("; no repeats")[2].removeprefix("; ")
-        return (*descriptor[:constraints], text, *descriptor[constraints + 1 :])
-    return descriptor
-
-
-def _plain(value: Any) -> Any:
-    return list(value) if isinstance(value, (list, tuple)) or hasattr(value, "tolist") else value
 
 
 def generated(node: ImportedNode, tmp_path: Path) -> types.ModuleType:
@@ -107,7 +67,7 @@ def test_generated_class_declares_what_the_node_declared(
         assert our_value == hand_value, name
         assert our_descriptor[:2] == hand_descriptor[:2], name  # name and type
         if outcome == EXACT or name in from_item:  # a default from the item: the file gives it
-            assert _without_item_rule(our_descriptor) == hand_descriptor, name
+            assert without_item_rule(our_descriptor) == hand_descriptor, name
         else:  # the warning named what could not be kept
             assert outcome == APPROXIMATE and our_descriptor != hand_descriptor, name
 
@@ -129,15 +89,10 @@ def _found(result: ImportedNode, name: str) -> Found:
     (``offsets`` holds ``offsets.shoulder``, ``*`` the top level's), or as a parameter of
     a mapped group's entry (``gains.*.p`` holds ``gains.shoulder.p``)."""
     keys = {o.key: o.found for o in result.imported.declared if o.key and o.found}
-    if name in keys:
-        return keys[name]
-    parts = name.split(".")
-    for index in range(len(parts) - 1):
-        entry = ".".join([*parts[:index], "*", *parts[index + 1 :]])
-        if entry in keys:
-            return keys[entry]
-    space = name.rpartition(".")[0]
-    return keys[space or "*"]
+    key = schema_key(keys, name)
+    if key is None:
+        raise KeyError(name)
+    return keys[key]
 
 
 def test_every_case_is_counted() -> None:
@@ -179,7 +134,7 @@ def test_patched_node_declares_what_the_hand_written_one_did(
     for name in hand:
         if _outcome(result, name) != APPROXIMATE:
             our_descriptor, our_value = ours[name]
-            assert (_without_item_rule(our_descriptor), our_value) == hand[name], name
+            assert (without_item_rule(our_descriptor), our_value) == hand[name], name
     ruff = [sys.executable, "-m", "ruff", "check", "--isolated", "--line-length", "100"]
     lint = subprocess.run(
         [*ruff, "--select", "F,E9,E501", str(patched)],

@@ -153,10 +153,23 @@ def replace_batch(
     rclpy's undeclare_parameter neither publishes the deletion nor undeclares a
     read-only parameter; a NOT_SET value under a dynamically typed descriptor
     does both, and new parameters in the same batch are announced together.
+    New parameters declared by type only (NOT_SET, optional) cannot share that change,
+    where NOT_SET undeclares: they are declared in a round just before it, and
+    undeclared again if it is refused.
     """
-    parameters = [parameter for parameter, _ in declarations]
-    descriptors = {p.name: d for p, d in declarations}
+    unset = [(p, d) for p, d in declarations if p.type_ == Parameter.Type.NOT_SET]
+    if unset:  # declared by type only: a round of their own, undone if the change is refused
+        result = internals.declare_with_descriptors(
+            node, [p for p, _ in unset], {p.name: d for p, d in unset}
+        )
+        if not result.successful:
+            return result
+    parameters = [p for p, _ in declarations if p.type_ != Parameter.Type.NOT_SET]
+    descriptors = {p.name: d for p, d in declarations if p.type_ != Parameter.Type.NOT_SET}
     for name in removed:
         parameters.append(Parameter(name))
         descriptors[name] = ParameterDescriptor(name=name, dynamic_typing=True)
-    return internals.set_with_descriptors(node, parameters, descriptors)
+    result = internals.set_with_descriptors(node, parameters, descriptors)
+    if not result.successful:
+        internals.forget_declared(node, [p.name for p, _ in unset])
+    return result
