@@ -152,11 +152,7 @@ def check_aliases(
             report(where, f"aliases are not supported inside a mapped group ({param.ros_name!r})")
             continue
         if not naming.is_ros_name(alias):
-            report(
-                where,
-                f"invalid alias {alias!r}: dot-separated names of letters, digits and "
-                "underscores, each starting with a letter",
-            )
+            report(where, f"invalid alias {alias!r}: dot-separated names of {naming.NAME_RULE}")
             continue
         parts = tuple(alias.split("."))
         clash = next((_clash(alias, parts, o, w) for o, w in taken if _overlap(parts, o)), None)
