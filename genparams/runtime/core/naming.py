@@ -14,6 +14,9 @@ from collections.abc import Sequence
 # ROS also accepts a leading underscore; genparams reserves those for the
 # generated classes' internals.
 ROS_TOKEN = re.compile(r"[A-Za-z][A-Za-z0-9_-]*(?:/[A-Za-z][A-Za-z0-9_-]*)*")
+# What rcl's `-p NAME:=VALUE` reads as NAME: tokens of letters, digits and '_' (no digit
+# first) between '.' and '/'. Names with '-' come from params files or parameter services.
+COMMAND_LINE_NAME = re.compile(r"[./]*[A-Za-z_][A-Za-z0-9_]*(?:[./]+[A-Za-z_][A-Za-z0-9_]*)*[./]*")
 NAME_RULE = "letters, digits, '_' and '-', starting with a letter, in parts joined by single '/'"
 # The characters of a name a Python attribute cannot hold: each becomes '_'.
 _NOT_IN_ATTRIBUTES = str.maketrans({"-": "_", "/": "_"})
