@@ -9,15 +9,10 @@ import ast
 from dataclasses import dataclass, field
 from typing import Any
 
+from genparams.importing import attribute_clash
 from genparams.rclpy_import.found import Found
 from genparams.rclpy_import.leaves import condition_value
-from genparams.runtime.core.naming import (
-    ENTRY_KEY,
-    NAME_RULE,
-    NODE_PARAMETERS,
-    attribute_name,
-    is_ros_name,
-)
+from genparams.runtime.core.naming import ENTRY_KEY, NAME_RULE, NODE_PARAMETERS, is_ros_name
 from genparams.schema.shape import is_parameter
 
 FOR_EACH = "for_each"
@@ -185,7 +180,7 @@ class SchemaTree:
         if name in NODE_PARAMETERS:
             return "every node declares it already"
         parts = name.split(".")
-        clash = self.attribute_clash(parts)
+        clash = attribute_clash(name, self.first)
         if clash is not None:
             return clash
         for index in range(1, len(parts) + 1):
@@ -238,24 +233,6 @@ class SchemaTree:
                 return f"{'.'.join(inner[:index])!r} is a parameter, not a namespace"
         if any(other.startswith(name + ".") for other in self.first):
             return f"{place.tail!r} is already a namespace"
-        return None
-
-    def attribute_clash(self, parts: list[str]) -> str | None:
-        """Why a name's parts would share a Python attribute with another name of the same
-        namespace (``twist-x`` and ``twist_x``: both ``twist_x``), or None."""
-        for other in self.first:
-            theirs = other.split(".")
-            for depth, (mine, their) in enumerate(zip(parts, theirs, strict=False)):
-                if mine != their:
-                    top = depth == 0
-                    shared = attribute_name(mine, top_level=top)
-                    if shared == attribute_name(their, top_level=top):
-                        of = f" (of {other!r})" if other != their else ""
-                        return (
-                            f"{mine!r} and {their!r}{of} of one namespace would share the "
-                            f"Python attribute {shared!r}"
-                        )
-                    break
         return None
 
     def unplace(self, name: str) -> None:
