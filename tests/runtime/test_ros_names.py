@@ -181,3 +181,20 @@ def test_without_overrides_the_defaults_hold(ros: RosHarness, module: types.Modu
     assert cfg.walk_button.type == "topic" and cfg.type.type.mode == "fast"
     assert list(cfg.wheels) == ["left-front", "right-front"] and list(cfg.buttons) == []
     assert cfg.to_dict() == module.RosNamesParams.defaults().to_dict()
+
+
+def test_remote_reads_and_sets_the_names_under_a_dashed_prefix(
+    ros: RosHarness, module: types.ModuleType
+) -> None:
+    target = ros.node()
+    cfg = module.RosNamesParams.declare(target, prefix="pad-1")
+    assert target.get_parameter("pad-1.walk_button.axis_mappings.twist-linear-x.axis").value == 1
+    remote = module.RosNamesParams.remote(ros.node(), target.get_fully_qualified_name(), "pad-1")
+    assert remote.wait_for_services(timeout_sec=10.0)
+    snapshot = ros.wait(remote.get())
+    assert snapshot == cfg.snapshot()
+    assert (snapshot.walk_button.type, snapshot.input_shape_height) == ("topic", 480)
+    values = {"walk_button.axis_mappings.twist-angular-z.axis": 5, "input_shape/height": 600}
+    assert ros.wait(remote.set(values)) is None
+    assert (cfg.walk_button.axis_mappings.twist_angular_z.axis, cfg.input_shape_height) == (5, 600)
+    assert list(ros.wait(remote.get()).wheels) == ["left-front", "right-front"]
