@@ -135,6 +135,10 @@ def test_the_params_file_reaches_every_name_and_attribute(
     )
     assert as_dict["wheels"]["right-rear"] == {"max-rpm": 250}
     assert as_dict["buttons"]["deadman-switch"] == {"button-id": 4, "type": "hold"}
+    rebuilt = module.RosNamesParams.defaults(as_dict)
+    assert rebuilt.to_dict() == as_dict and rebuilt == cfg.snapshot()
+    dotted = module.RosNamesParams.defaults({"walk_button.axis_mappings.twist-linear-x.axis": 9})
+    assert dotted.walk_button.axis_mappings.twist_linear_x.axis == 9
 
 
 def test_sets_over_the_services_are_checked_and_reach_the_attributes(
