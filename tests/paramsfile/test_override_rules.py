@@ -13,7 +13,7 @@ from genparams.cli import main
 from genparams.outputs.explain_text import text_report
 from genparams.paramsfile.check_params import Bound
 from genparams.paramsfile.explain import explain, overrides_document
-from tests.support import RosHarness
+from tests.support import ROOT, RosHarness
 
 CAMERA = """\
 genparams: 1
@@ -155,3 +155,22 @@ def test_a_rule_name_is_read_as_rcl_reads_it(
     else:
         assert name in node._parameter_overrides
         assert (code, err) == (0, "")
+
+
+def test_names_holding_dashes_slashes_and_type_are_explained(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    case = ROOT / "tests" / "cases" / "ros_names"
+    params = case / "check_params" / "ros_names_good" / "params.yaml"
+    schema = str(case / "schema.yaml")
+    code, out, err = run(
+        capsys, "/teleop", "--schema", schema, "--params-file", str(params),
+        "-p", "input_shape/height:=100",
+    )  # fmt: skip
+    assert (code, err) == (0, "")
+    rows = {line.split()[0]: line.split()[1:3] for line in out[2:]}
+    assert rows["input_shape/height"] == ["100", "-p"]
+    assert rows["walk_button.axis_mappings.twist-linear-x.axis"][0] == "4"
+    assert rows["walk_button.type"][0] == "action"
+    assert rows["buttons.deadman-switch.type"][0] == "hold"
+    assert rows["max-speed"][0] == "2.5"
