@@ -233,7 +233,7 @@ class SchemaTree:
                 return f"{'.'.join(inner[:index])!r} is a parameter, not a namespace"
         if any(other.startswith(name + ".") for other in self.first):
             return f"{place.tail!r} is already a namespace"
-        return None
+        return attribute_clash(name, self.first)
 
     def unplace(self, name: str) -> None:
         """Take a parameter out of the tree, and the namespaces and mapped groups it

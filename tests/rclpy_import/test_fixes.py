@@ -273,3 +273,25 @@ def test_the_patch_drops_a_variable_that_only_named_a_declaration(
             check=False,
         )
         assert lint.returncode == 0, lint.stdout
+
+
+def test_fields_of_a_mapped_group_sharing_an_attribute_are_left_out_with_the_reason(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = tmp_path / "gains.py"
+    source.write_text(
+        "class Gains:\n    def __init__(self):\n"
+        "        self.declare_parameter('joints', ['a', 'b'])\n"
+        "        for j in self.get_parameter('joints').value:\n"
+        "            self.declare_parameter(f'gains.{j}.p-max', 1.0)\n"
+        "            self.declare_parameter(f'gains.{j}.p_max', 2.0)\n",
+        encoding="utf-8",
+    )
+    code, out, err = run(capsys, str(source))
+    gains = yaml.safe_load(out)["parameters"]["gains"]
+    assert gains == {"for_each": "joints", "p-max": {"type": "double", "default": 1.0}}
+    assert code == 1
+    assert (
+        "gains.*.p_max: warning: 'p_max' and 'p-max' (of 'gains.*.p-max') of one namespace "
+        "would share the Python attribute 'p_max': parameter left out"
+    ) in err
