@@ -74,8 +74,21 @@ def check_maps(
             )
         elif param.default is not None:  # None: required, or a bad default already reported
             reason = naming.entry_key_problem(param.default, group.ros_name)
+            if reason is None and group.in_place:
+                beside = _names_beside(root, group.path)
+                reason = naming.entry_beside_problem(param.default, group.ros_name, beside)
             if reason is not None:
                 report((*leaf_paths[target], "default"), f"default violates for_each: {reason}")
+
+
+def _names_beside(root: Group, path: tuple[str, ...]) -> set[str]:
+    """The fixed names of the namespace at ``path``, beside its in-place entries."""
+    depth = len(path)
+    return {
+        p.path[depth]
+        for p in root.walk_parameters()
+        if p.path[:depth] == path and len(p.path) > depth and p.path[depth] != naming.ENTRY_KEY
+    }
 
 
 _CONDITION_TYPES = ("bool", "int", "double", "string")

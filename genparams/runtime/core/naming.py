@@ -5,7 +5,7 @@ from __future__ import annotations
 import keyword
 import re
 import sys
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 
 # One token of a parameter name: the text between two dots. rclpy declares any
 # non-empty name and rcl's params-file parser takes any key, so the rule is
@@ -99,6 +99,25 @@ def entry_key_problem(keys: Sequence[str], maps: str) -> str | None:
         if key in seen:
             return f"item {index} {key!r} repeats: each item names one entry of {where}"
         seen.add(key)
+    return None
+
+
+def entry_beside_problem(keys: Sequence[str], map_path: str, names: Collection[str]) -> str | None:
+    """Why an item cannot key an entry of the in-place map at ``map_path``, beside its fixed
+    ``names``: it is one of them, or spelt as one in Python (``twist-x`` beside
+    ``twist_x``: entries and fields share the namespace's attributes). None when it can."""
+    where = map_path or "the top level"
+    top = not map_path
+    spelt = {attribute_name(name, top_level=top): name for name in names}
+    for key in keys:
+        if key in names:
+            return f"item {key!r} is already a name in {where}: an entry cannot share it"
+        attribute = attribute_name(key, top_level=top)
+        if attribute in spelt:
+            return (
+                f"item {key!r} and {spelt[attribute]!r} of {where} share the Python attribute "
+                f"{attribute!r}: an entry cannot share it"
+            )
     return None
 
 
