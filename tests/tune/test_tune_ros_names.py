@@ -83,6 +83,10 @@ def test_a_set_of_a_dashed_name_reaches_the_node_and_is_checked(
     assert remote.get("input_shape/height") == [720]
 
 
+def topics_of(graph: Graph) -> set[str]:
+    return {topic for topic, _types in graph.node.get_topic_names_and_types()}
+
+
 def test_audit_reads_the_names_and_compares_them_with_a_deployment(
     server: TuneServer, tmp_path: Path
 ) -> None:
@@ -94,8 +98,7 @@ def test_audit_reads_the_names_and_compares_them_with_a_deployment(
     )
     graph = Graph(unique("audit_names"))
     try:
-        topics = lambda: {t for t, _ in graph.node.get_topic_names_and_types()}  # noqa: E731
-        eventually(lambda: NODE + SCHEMA_TOPIC_SUFFIX in topics())
+        eventually(lambda: NODE + SCHEMA_TOPIC_SUFFIX in topics_of(graph))
         result = audit(graph, read_deployment([deployment]), only=(NODE,), timeout=WAIT_S)
     finally:
         graph.close()
