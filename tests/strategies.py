@@ -36,7 +36,8 @@ RESERVED_TOP_LEVEL = {
 }
 REJECTED = {"bool", "bytes", "float", "int", "str", "tuple", "ClassVar", "for_each"}
 
-ROS_TOKEN = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+# docs/schema.md#names, restated for the oracle: '-' and '/' inside names, spelt '_'.
+ROS_TOKEN = re.compile(r"[A-Za-z][A-Za-z0-9_-]*(?:/[A-Za-z][A-Za-z0-9_-]*)*")
 
 HOSTILE_TEXT = (
     '"',
@@ -107,7 +108,8 @@ SPECIAL_NAMES = (
 
 
 def python_attribute(name: str) -> str:
-    return name + "_" if keyword.iskeyword(name) else name
+    spelt = name.replace("-", "_").replace("/", "_")
+    return spelt + "_" if keyword.iskeyword(spelt) else spelt
 
 
 def texts(max_size: int = 30) -> st.SearchStrategy[str]:
@@ -127,11 +129,13 @@ def names(*, top_level: bool) -> st.SearchStrategy[str]:
         st.from_regex(r"[A-Za-z][A-Za-z0-9_]{0,12}", fullmatch=True),
         st.sampled_from(SPECIAL_NAMES),
         st.from_regex(r"[a-z][a-z0-9_]{60,120}", fullmatch=True),
+        st.from_regex(r"[A-Za-z][A-Za-z0-9_-]{0,8}(/[A-Za-z][A-Za-z0-9_-]{0,4})?", fullmatch=True),
     )
-    excluded = REJECTED | (RESERVED_TOP_LEVEL if top_level else {"type"})
+    excluded = REJECTED | (RESERVED_TOP_LEVEL if top_level else set())
     return tokens.filter(
         lambda name: (
             name not in excluded
+            and python_attribute(name) not in excluded
             and ROS_TOKEN.fullmatch(name) is not None
             and not name.startswith("zz_")
         )

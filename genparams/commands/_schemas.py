@@ -8,7 +8,7 @@ from pathlib import Path
 from genparams.commands._common import schema_from
 from genparams.errors import CommandError
 from genparams.paramsfile.check_params import Bound
-from genparams.runtime.core.naming import is_ros_token, join_prefix
+from genparams.runtime.core.naming import NAME_RULE, is_ros_token, join_prefix
 
 
 def bound_spec(text: str) -> tuple[Path, str]:
@@ -16,7 +16,7 @@ def bound_spec(text: str) -> tuple[Path, str]:
     path, _, prefix = text.rpartition("@") if "@" in text else (text, "", "")
     if prefix and not all(is_ros_token(part) for part in prefix.split(".")):
         raise argparse.ArgumentTypeError(
-            f"invalid prefix {prefix!r} in {text!r}: dot-separated names of letters, digits, '_'"
+            f"invalid prefix {prefix!r} in {text!r}: dot-separated names of {NAME_RULE}"
         )
     return Path(path), prefix
 

@@ -27,6 +27,7 @@ from genparams.runtime.core.types import TYPES, ValueTypeError
 from genparams.runtime.core.validator_kinds import KINDS, ValidatorArgumentError, checked_validator
 from genparams.schema.errors import SchemaProblem
 from genparams.schema.loader import LoadedDocument, Path, dotted
+from genparams.schema.shape import is_parameter
 
 MAP_PREFIX = "__map_"
 OPEN_TYPE = "none"  # GPL's type of a namespace whose parameters other code declares
@@ -126,7 +127,7 @@ class _Importer:
         for key in plain:
             value = tree[key]
             key_path = (*doc_path, key)
-            if isinstance(value, dict) and "type" in value:
+            if is_parameter(value):  # GPL too: a mapping whose first value is one is a namespace
                 leaf = self.leaf(value, key_path, (*ros_path, key))
                 if leaf is not None:
                     out[key] = leaf
@@ -234,9 +235,9 @@ class _Importer:
     def all_lost(self, tree: dict[str, Any], ros_path: tuple[str, ...]) -> None:
         """Every parameter under ``tree``: left out."""
         for key, value in tree.items():
-            if isinstance(value, dict) and "type" in value and value["type"] != OPEN_TYPE:
+            if is_parameter(value) and value["type"] != OPEN_TYPE:
                 self.outcomes.append(Outcome(".".join((*ros_path, str(key))), LEFT_OUT))
-            elif isinstance(value, dict) and "type" not in value:
+            elif isinstance(value, dict) and not is_parameter(value):
                 inner = "*" if str(key).startswith(MAP_PREFIX) else str(key)
                 self.all_lost(value, (*ros_path, inner))
 
@@ -372,9 +373,9 @@ def _unset_inside(namespace: dict[str, Any]) -> bool:
     for key, value in namespace.items():
         if not isinstance(value, dict) or key == "for_each" or value.get("open"):
             continue
-        if "type" not in value and _unset_inside(value):
+        if not is_parameter(value) and _unset_inside(value):
             return True
-        if "type" in value and "default" not in value and not value.get("optional"):
+        if is_parameter(value) and "default" not in value and not value.get("optional"):
             return True
     return False
 

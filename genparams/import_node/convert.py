@@ -16,8 +16,8 @@ from dataclasses import dataclass
 from typing import Any
 
 from genparams.errors import ParameterProblem
-from genparams.importing import EXACT, LEFT_OUT, Imported, Outcome, schema_name
-from genparams.runtime.core.naming import NODE_PARAMETERS, is_ros_token
+from genparams.importing import EXACT, LEFT_OUT, Imported, Outcome, attribute_clash, schema_name
+from genparams.runtime.core.naming import NAME_RULE, NODE_PARAMETERS, is_ros_name
 from genparams.runtime.core.types import TYPES_BY_ROS_TYPE
 
 NOT_SET = 0  # rcl_interfaces ParameterType.PARAMETER_NOT_SET
@@ -46,6 +46,7 @@ def import_node(node: str, reported: Sequence[Reported], name: str | None = None
     schema = name or schema_name(node.rstrip("/").rpartition("/")[2], "node")
     tree: dict[str, Any] = {}
     names = {r.name for r in reported}
+    kept: list[str] = []
     outcomes: list[Outcome] = []
     warnings: list[ParameterProblem] = []
     notes: list[ParameterProblem] = []
@@ -55,7 +56,7 @@ def import_node(node: str, reported: Sequence[Reported], name: str | None = None
                 ParameterProblem(param.name, "note: declared by rclpy itself: left out", place=node)
             )
             continue
-        problem = _problem(param, names)
+        problem = _problem(param, names) or attribute_clash(param.name, kept)
         if problem is not None:
             warnings.append(
                 ParameterProblem(param.name, f"warning: {problem}: left out", place=node)
@@ -67,6 +68,7 @@ def import_node(node: str, reported: Sequence[Reported], name: str | None = None
         for part in spaces:
             namespace = namespace.setdefault(part, {})
         namespace[last] = _leaf(param)
+        kept.append(param.name)
         outcomes.append(Outcome(param.name, EXACT, param.name))
     return Imported(
         name=schema,
@@ -85,8 +87,8 @@ def import_node(node: str, reported: Sequence[Reported], name: str | None = None
 def _problem(param: Reported, names: set[str]) -> str | None:
     """Why a schema cannot state this parameter exactly, or None."""
     parts = param.name.split(".")
-    if not all(is_ros_token(part) for part in parts):
-        return "its name is not made of ROS name tokens joined by '.'"
+    if not is_ros_name(param.name):
+        return f"its name is not made of names of {NAME_RULE}, joined by '.'"
     if any(".".join(parts[:n]) in names for n in range(1, len(parts))):
         return f"{'.'.join(parts[:-1])!r} is a parameter too, so it cannot be a namespace"
     if param.dynamic_typing:

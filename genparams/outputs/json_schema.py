@@ -99,8 +99,13 @@ def _group_name(group: Group) -> str:
     return f"group.{group.ros_name}" if group.ros_name else "group"
 
 
+def _def_ref(name: str) -> str:
+    """A JSON Pointer to ``$defs[name]``: '~' and '/' (a name may hold '/') escaped."""
+    return "#/$defs/" + name.replace("~", "~0").replace("/", "~1")
+
+
 def _group_ref(group: Group) -> str:
-    return f"#/$defs/{_group_name(group)}"
+    return _def_ref(_group_name(group))
 
 
 def _parameter_name(parameter: Parameter) -> str:
@@ -192,12 +197,12 @@ def _ref(item: Group | Parameter, path: tuple[str, ...]) -> str:
     if isinstance(item, Parameter):
         return _parameter_ref(item)
     if item.mapped_over and path[-1] != ENTRY_KEY:
-        return f"#/$defs/{_map_name(item)}"
+        return _def_ref(_map_name(item))
     return _group_ref(item)
 
 
 def _parameter_ref(parameter: Parameter) -> str:
-    return f"#/$defs/{_parameter_name(parameter)}"
+    return _def_ref(_parameter_name(parameter))
 
 
 class _OldNames:

@@ -13,6 +13,14 @@ from genparams.runtime.core.naming import ENTRY_KEY, ENTRY_KEY_TEXT
 from genparams.schema.model import Group, OpenNamespace, Parameter
 
 ENTRY_KEY_PATTERN = f"^{ENTRY_KEY_TEXT.pattern}$"  # the key of a mapped entry, as naming words it
+# Characters with a meaning in a regex: escaped alike for Python's re and ECMAScript's
+# unicode mode (editors), which refuses re.escape's `\-`.
+_REGEX_SYNTAX = re.compile(r"([\\^$.*+?()\[\]{}|/])")
+
+
+def regex_literal(text: str) -> str:
+    """A regex matching exactly ``text``, read alike by Python and by ECMAScript."""
+    return _REGEX_SYNTAX.sub(r"\\\1", text)
 
 
 def descendants(group: Group) -> Iterator[tuple[tuple[str, ...], Group | Parameter]]:
@@ -55,9 +63,9 @@ def dotted_pattern(path: tuple[str, ...], beside: Collection[str] = ()) -> str:
     entries) stands; no entry key may be one of them, so no key matches both.
     """
     token = ENTRY_KEY_PATTERN[1:-1]
-    parts = [token if p == ENTRY_KEY else re.escape(p) for p in path]
+    parts = [token if p == ENTRY_KEY else regex_literal(p) for p in path]
     if beside and ENTRY_KEY in path:
-        names = "|".join(re.escape(name) for name in sorted(beside))
+        names = "|".join(regex_literal(name) for name in sorted(beside))
         first = path.index(ENTRY_KEY)
         parts[first] = f"(?!(?:{names})(?:\\.|$)){token}"
     return "^" + "\\.".join(parts) + "$"

@@ -29,7 +29,7 @@ from genparams.paramsfile.node_sections import Skipped, sections_for
 from genparams.paramsfile.params_reader import ParamEntry, ParamsDocument, Section
 from genparams.paramsfile.ros_yaml import NoValue, absolute, ros_scalar
 from genparams.paramsfile.section_checker import SectionChecker
-from genparams.runtime.core.naming import is_ros_token, join_prefix
+from genparams.runtime.core.naming import COMMAND_LINE_NAME, NODE_TOKEN, join_prefix
 from genparams.runtime.core.spec import CompiledParam
 from genparams.runtime.core.types import ValueTypeError
 from genparams.schema.errors import Location, SchemaError
@@ -98,9 +98,14 @@ def _split_rule(rule: str) -> tuple[str, str]:
     node = target.rpartition(":")[0]
     if not sep or not target.rpartition(":")[2]:
         raise RuleError(f"-p {rule!r}: expected NAME:=VALUE or NODE:NAME:=VALUE")
-    if node and not is_ros_token(node):
+    if node and NODE_TOKEN.fullmatch(node) is None:
         # rcl takes one plain node name here: no namespace, no wildcard.
         raise RuleError(f"-p {rule!r}: the node is one name, without namespace or wildcard")
+    if COMMAND_LINE_NAME.fullmatch(target.rpartition(":")[2]) is None:
+        raise RuleError(
+            f"-p {rule!r}: rcl reads a name of letters, digits and '_' between '.' and '/' "
+            "here (no digit first); give other names in a params file"
+        )
     return target, value
 
 

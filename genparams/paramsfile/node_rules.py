@@ -23,6 +23,7 @@ from typing import Any
 
 from genparams.paramsfile.ros_yaml import absolute, node_matches, node_pattern_problem
 from genparams.runtime.core.changes import same_value
+from genparams.runtime.core.naming import NODE_TOKEN, is_ros_name
 from genparams.runtime.core.rules import RuleError, compile_rule
 from genparams.schema.errors import Location, SchemaProblem
 
@@ -162,8 +163,8 @@ def _check_problem(check: str) -> str | None:
 
 
 def _same_problem(parameter: str) -> str | None:
-    tokens = parameter.split(".")
-    if all(re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", t) for t in tokens):
+    # Any node's parameters: a schema's names, or rcl's tokens (`_private` too).
+    if is_ros_name(parameter) or all(NODE_TOKEN.fullmatch(t) for t in parameter.split(".")):
         return None
     return f"same: takes one parameter name, such as use_sim_time, not {parameter!r}"
 

@@ -9,9 +9,11 @@ import ast
 from dataclasses import dataclass, field
 from typing import Any
 
+from genparams.importing import attribute_clash
 from genparams.rclpy_import.found import Found
 from genparams.rclpy_import.leaves import condition_value
-from genparams.runtime.core.naming import ENTRY_KEY, NODE_PARAMETERS, is_ros_name
+from genparams.runtime.core.naming import ENTRY_KEY, NAME_RULE, NODE_PARAMETERS, is_ros_name
+from genparams.schema.shape import is_parameter
 
 FOR_EACH = "for_each"
 _CONDITION_TYPES = ("bool", "int", "double", "string")
@@ -167,24 +169,20 @@ class SchemaTree:
             if not isinstance(node, dict) or part not in node:
                 return None
             node = node[part]
-        return node if isinstance(node, dict) and "type" in node else None
+        return node if is_parameter(node) else None
 
     def name_problem(self, name: str) -> str | None:
         if name in self.first:
             where = self.first[name].where
             return f"declared again (first at {where.line}:{where.column}; rclpy refuses it)"
-        if "/" in name and is_ros_name(name.replace("/", ".")):
-            return (
-                "a name holding '/': rclpy accepts it, a schema names parameters by dotted "
-                "tokens (rename it with '.' to keep it)"
-            )
         if name != "*" and not is_ros_name(name):
-            return "not a name genparams declares (dotted tokens of letters, digits and _)"
+            return f"not a name genparams declares (dotted names of {NAME_RULE})"
         if name in NODE_PARAMETERS:
             return "every node declares it already"
         parts = name.split(".")
-        if len(parts) > 1 and parts[-1] == "type":
-            return "a namespace cannot hold a parameter named 'type'"
+        clash = attribute_clash(name, self.first)
+        if clash is not None:
+            return clash
         for index in range(1, len(parts) + 1):
             space = ".".join(parts[:index])
             if space in self.groups:
@@ -206,8 +204,6 @@ class SchemaTree:
             where = self.first[name].where
             return f"declared again (first at {where.line}:{where.column}; rclpy refuses it)"
         inner = place.tail.split(".")
-        if inner[-1] == "type":
-            return "a namespace cannot hold a parameter named 'type'"
         group = place.group
         owner = self.groups.get(group)
         if owner is not None and owner != key_list:
@@ -237,7 +233,7 @@ class SchemaTree:
                 return f"{'.'.join(inner[:index])!r} is a parameter, not a namespace"
         if any(other.startswith(name + ".") for other in self.first):
             return f"{place.tail!r} is already a namespace"
-        return None
+        return attribute_clash(name, self.first)
 
     def unplace(self, name: str) -> None:
         """Take a parameter out of the tree, and the namespaces and mapped groups it

@@ -21,6 +21,7 @@ from genparams.schema.loader import LoadedDocument, Path, dotted
 from genparams.schema.model import Group, OpenNamespace, Parameter, Schema, with_entry_keys
 from genparams.schema.references import check_aliases, check_conditions, check_maps
 from genparams.schema.rule_builder import build_rules
+from genparams.schema.shape import is_parameter
 
 FOR_EACH = "for_each"
 
@@ -130,7 +131,7 @@ class _ModelBuilder:
             if not self.check_name(key, value, key_path, attributes, top_level=not member_path):
                 continue
             child_path = (*member_path, key)
-            if self.skipped(key_path, whole_tree=isinstance(value, dict) and "type" in value):
+            if self.skipped(key_path, whole_tree=is_parameter(value)):
                 self.unbuilt.append(child_path)
                 continue
             child_attribute = naming.attribute_name(key, top_level=not member_path)
@@ -143,9 +144,9 @@ class _ModelBuilder:
                         location=self.document.key_location(key_path),
                     )
                 )
-            elif isinstance(value, dict) and "type" in value and FOR_EACH in value:
+            elif is_parameter(value) and FOR_EACH in value:
                 groups.append(self.per_item(value, key_path, child_path, child_attribute))
-            elif isinstance(value, dict) and "type" in value:
+            elif is_parameter(value):
                 parameters.append(self.parameter(value, key_path, child_path, child_attribute))
             elif isinstance(value, dict):
                 child_class = self.group_class_name(child_path)
@@ -224,10 +225,10 @@ class _ModelBuilder:
                 at_key=True,
             )
             return None
-        if self.skipped(key_path, whole_tree="type" in value):
+        if self.skipped(key_path, whole_tree=is_parameter(value)):
             self.unbuilt.append((*path, naming.ENTRY_KEY))
             return None
-        if "type" in value:
+        if is_parameter(value):
             return self.per_item(value, key_path, path, "", in_place=True)
         words = "".join(naming.pascal_case(p) for p in path if p != naming.ENTRY_KEY)
         depth = path.count(naming.ENTRY_KEY) + 1  # "Entry" once per map level
@@ -268,8 +269,7 @@ class _ModelBuilder:
         if not naming.is_ros_token(key):
             self.problem(
                 key_path,
-                f"invalid name {key!r}: "
-                "use letters, digits and underscores, starting with a letter",
+                f"invalid name {key!r}: use {naming.NAME_RULE}",
                 at_key=True,
             )
             return False
@@ -285,8 +285,9 @@ class _ModelBuilder:
         if attribute in seen:
             self.problem(
                 key_path,
-                f"name {key!r} becomes Python attribute {attribute!r}, "
-                f"which {seen[attribute]!r} already uses",
+                f"name {key!r} becomes Python attribute {attribute!r}, which "
+                f"{seen[attribute]!r} already uses: two names of one namespace need two "
+                "attributes ('-' and '/' become '_', a keyword takes a trailing '_')",
                 at_key=True,
             )
             return False
@@ -393,7 +394,7 @@ def _adopts(value: Any) -> bool:
 
 def is_open_namespace(value: Any) -> bool:
     """``{open: true}``: a namespace other code fills (``open`` with a mapping is a name)."""
-    return isinstance(value, dict) and value.get("open") is True and "type" not in value
+    return isinstance(value, dict) and value.get("open") is True and not is_parameter(value)
 
 
 def _keys(tree: Any) -> Iterator[str]:

@@ -74,8 +74,21 @@ def check_maps(
             )
         elif param.default is not None:  # None: required, or a bad default already reported
             reason = naming.entry_key_problem(param.default, group.ros_name)
+            if reason is None and group.in_place:
+                beside = _names_beside(root, group.path)
+                reason = naming.entry_beside_problem(param.default, group.ros_name, beside)
             if reason is not None:
                 report((*leaf_paths[target], "default"), f"default violates for_each: {reason}")
+
+
+def _names_beside(root: Group, path: tuple[str, ...]) -> set[str]:
+    """The fixed names of the namespace at ``path``, beside its in-place entries."""
+    depth = len(path)
+    return {
+        p.path[depth]
+        for p in root.walk_parameters()
+        if p.path[:depth] == path and len(p.path) > depth and p.path[depth] != naming.ENTRY_KEY
+    }
 
 
 _CONDITION_TYPES = ("bool", "int", "double", "string")
@@ -152,11 +165,7 @@ def check_aliases(
             report(where, f"aliases are not supported inside a mapped group ({param.ros_name!r})")
             continue
         if not naming.is_ros_name(alias):
-            report(
-                where,
-                f"invalid alias {alias!r}: dot-separated names of letters, digits and "
-                "underscores, each starting with a letter",
-            )
+            report(where, f"invalid alias {alias!r}: dot-separated names of {naming.NAME_RULE}")
             continue
         parts = tuple(alias.split("."))
         clash = next((_clash(alias, parts, o, w) for o, w in taken if _overlap(parts, o)), None)

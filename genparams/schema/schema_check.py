@@ -13,6 +13,7 @@ from genparams.runtime.core.suggest import did_you_mean
 from genparams.schema.errors import SchemaProblem
 from genparams.schema.loader import LoadedDocument, Path, dotted
 from genparams.schema.resources import resource_dir
+from genparams.schema.shape import TYPE_KEY
 
 
 @functools.cache
@@ -53,12 +54,7 @@ def _problems(
         return
     if error.validator == "enum":
         options: list[Any] = list(error.validator_value)  # type: ignore[arg-type]
-        if isinstance(error.instance, dict) and path[-1:] == ("type",):
-            message = (
-                "a mapping with a 'type:' key is a parameter, so a namespace cannot hold "
-                "a parameter named 'type': rename it"
-            )
-        elif isinstance(error.instance, str):
+        if isinstance(error.instance, str):
             message = (
                 f"{error.instance!r} is not one of {', '.join(map(str, options))}"
                 f"{did_you_mean(error.instance, options)}"
@@ -87,10 +83,24 @@ def _problems(
             document.value_location(path),
             dotted(path),
             "expected a parameter (a mapping with 'type:') or a namespace (a mapping of "
-            f"parameters), got {json.dumps(error.instance, default=str)[:60]}",
+            f"parameters), got {json.dumps(error.instance, default=str)[:60]}"
+            + _type_namespace_hint(document, path),
         )
         return
     yield SchemaProblem(document.value_location(path), dotted(path), _plain(error))
+
+
+def _type_namespace_hint(document: LoadedDocument, path: Path) -> str:
+    """Why the mapping holding ``path`` is a namespace, when a ``type:`` mapping made it one."""
+    holder: Any = document.data
+    for part in path[:-1]:
+        holder = holder[part]
+    if isinstance(holder, dict) and isinstance(holder.get(TYPE_KEY), dict):
+        return (
+            f" ({dotted(path[:-1])} is a namespace: its 'type:' holds a mapping, so it names "
+            "a parameter or namespace 'type')"
+        )
+    return ""
 
 
 def _validator_message(instance: Any) -> str:

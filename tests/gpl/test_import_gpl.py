@@ -10,9 +10,11 @@ import sys
 from pathlib import Path
 
 import pytest
+from rclpy.parameter import Parameter
 
 from genparams.cli import main
 from tests import corpus
+from tests.support import RosHarness, load_generated
 
 GOLDEN = Path(__file__).parent / "golden"
 SOURCES = Path(__file__).parent / "sources"
@@ -190,3 +192,31 @@ def test_a_custom_validator_with_one_argument_not_in_a_list(
     assert "def above(value: Any, arg0: Any) -> str | None:" in (
         tmp_path / "c_checks.py"
     ).read_text("utf-8")
+
+
+def test_a_parameter_named_type_is_kept_and_declared(
+    ros: RosHarness, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """GPL reads a mapping whose first value is a mapping as a namespace, so `type:` can name
+    a parameter; the import keeps it, and the generated class declares it there."""
+    source = tmp_path / "teleop.yaml"
+    source.write_text(
+        "teleop:\n"
+        "  walk:\n"
+        "    type:\n"
+        "      type: string\n"
+        "      default_value: topic\n"
+        "      validation:\n"
+        '        one_of<>: [["topic", "action"]]\n'
+        "    topic_name: {type: string, default_value: cmd_vel}\n",
+        encoding="utf-8",
+    )
+    target = tmp_path / "teleop_schema.yaml"
+    code, _, err = run(capsys, str(source), "-o", str(target))
+    assert (code, err) == (0, "imported 2 of 2 parameters\n")
+    module = load_generated(target, tmp_path)
+    node = ros.node()
+    cfg = module.TeleopParams.declare(node)
+    assert (cfg.walk.type, node.get_parameter("walk.type").value) == ("topic", "topic")
+    (refused,) = ros.client(node).set(Parameter("walk.type", value="jump"))
+    assert not refused.successful and cfg.walk.type == "topic"

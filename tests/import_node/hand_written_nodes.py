@@ -76,15 +76,35 @@ def dynamic(name: str) -> Node:
     return node
 
 
-def lossy(name: str) -> Node:
-    """A parameter that is also the namespace of another: no schema can state both."""
+def names(name: str) -> Node:
+    """Names holding '-' and '/', and parameters named type, as rclpy declares them."""
     node = Node(name)
-    node.declare_parameter("limits", 1.0)
-    node.declare_parameter("limits.upper", 2.0)
+    node.declare_parameter(
+        "axis_mappings.twist-linear-x.scale", 0.5, ParameterDescriptor(description="Scale.")
+    )
+    node.declare_parameter("axis_mappings.twist-linear-x.axis", 1)
+    node.declare_parameter("walk.type", "topic")
+    node.declare_parameter("type.type.mode", "fast")
+    node.declare_parameter(
+        "input_shape/height",
+        480,
+        ParameterDescriptor(integer_range=[IntegerRange(from_value=1, to_value=4096, step=1)]),
+    )
     return node
 
 
-KINDS = {"driver": driver, "dynamic": dynamic, "lossy": lossy}
+def lossy(name: str) -> Node:
+    """A parameter that is also the namespace of another, and two names of one Python
+    attribute: no schema can state both of either pair."""
+    node = Node(name)
+    node.declare_parameter("limits", 1.0)
+    node.declare_parameter("limits.upper", 2.0)
+    node.declare_parameter("speed-max", 1.0)
+    node.declare_parameter("speed_max", 2.0)
+    return node
+
+
+KINDS = {"driver": driver, "dynamic": dynamic, "names": names, "lossy": lossy}
 
 
 def main(specs: list[str]) -> int:

@@ -49,7 +49,7 @@ def _one_by_one(client: ServiceClient, names: list[str]) -> list[Any]:
 
 @pytest.mark.parametrize(
     "kind, parameters",
-    [("driver", 12), ("dynamic", 5)],
+    [("driver", 12), ("dynamic", 5), ("names", 5)],
 )
 def test_generated_class_reproduces_every_descriptor(
     kind: str, parameters: int, ros: RosHarness, tmp_path: Path
@@ -112,14 +112,19 @@ def test_a_parameter_a_schema_cannot_state_is_left_out_with_a_warning_and_exit_1
         done = import_node(node, "-o", str(output))
     assert done.returncode == 1, done.stderr
     lines = done.stderr.splitlines()  # rclpy's own parameters first, as notes
-    assert all(": note: declared by rclpy itself: left out" in line for line in lines[:-2])
-    assert lines[-2:] == [
+    assert all(": note: declared by rclpy itself: left out" in line for line in lines[:-3])
+    assert lines[-3:] == [
         f"{node}: limits.upper: warning: 'limits' is a parameter too, so it cannot be a "
         "namespace: left out",
-        "imported 1 of 2 parameters; 1 left out (see warnings)",
+        f"{node}: speed_max: warning: 'speed_max' and 'speed-max' of one namespace would "
+        "share the Python attribute 'speed_max': left out",
+        "imported 2 of 4 parameters; 2 left out (see warnings)",
     ]
     schema = yaml.safe_load(output.read_text(encoding="utf-8"))
-    assert schema["parameters"] == {"limits": {"type": "double", "default": 1.0}}
+    assert schema["parameters"] == {
+        "limits": {"type": "double", "default": 1.0},
+        "speed-max": {"type": "double", "default": 1.0},
+    }
 
 
 def test_a_node_that_is_not_there_exits_2() -> None:

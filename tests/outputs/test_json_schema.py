@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import io
 import json
+from collections.abc import Iterator
 from contextlib import redirect_stdout
 from pathlib import Path
 from typing import Any
@@ -17,7 +18,7 @@ from genparams.cli import main
 from genparams.outputs.json_schema import params_file_schema
 from genparams.outputs.params_file import default_params_file
 from genparams.outputs.render import render_params_file
-from tests.golden import EXAMPLE_SCHEMA, output_cases
+from tests.golden import CASES, CHECK_PARAMS, EXAMPLE_SCHEMA, output_cases
 
 
 def _validator(schema_path: Path, *, partial: bool = False) -> jsonschema.Draft202012Validator:
@@ -119,3 +120,37 @@ def test_command_prints_json(capsys: pytest.CaptureFixture[str]) -> None:
     document = json.loads(out.getvalue())
     assert document["$schema"] == "https://json-schema.org/draft/2020-12/schema"
     assert "required" not in document["$defs"]["group"]
+
+
+def test_names_holding_dashes_slashes_and_type_are_checked_by_their_own_definitions() -> None:
+    """`input_shape/height` is a `$defs` name holding '/': its `$ref` escapes it (`~1`)."""
+    case = CASES / "ros_names"
+    validator = _validator(case / "schema.yaml")
+    good = (case / CHECK_PARAMS / "ros_names_good" / "params.yaml").read_text("utf-8")
+    assert _errors(validator, good) == []
+    bad = (case / CHECK_PARAMS / "ros_names_bad" / "params.yaml").read_text("utf-8")
+    prefix = "/**.ros__parameters."
+    assert _errors(validator, bad) == [
+        ("/**.ros__parameters", "additionalProperties"),  # max_speed
+        (f"{prefix}buttons.deadman-switch.button-id", "type"),
+        (f"{prefix}input_shape/height", "minimum"),
+        (f"{prefix}walk_button.axis_mappings", "additionalProperties"),  # twist_angular_z
+        (f"{prefix}walk_button.axis_mappings.twist-linear-x.axis", "type"),
+        (f"{prefix}walk_button.type", "enum"),
+    ]
+    document = params_file_schema(load_schema(case / "schema.yaml"))
+    refs = [v for k, v in _walk(document) if k == "$ref"]
+    assert "#/$defs/param.input_shape~1height" in refs
+    patterns = [v for k, v in _walk(document) if k == "pattern"]
+    patterns += [p for k, v in _walk(document) if k == "patternProperties" for p in v]
+    assert patterns and not any("\\-" in p for p in patterns)  # ECMAScript's unicode mode
+
+
+def _walk(value: Any) -> Iterator[tuple[str, Any]]:
+    if isinstance(value, dict):
+        for key, item in value.items():
+            yield key, item
+            yield from _walk(item)
+    elif isinstance(value, list):
+        for item in value:
+            yield from _walk(item)

@@ -184,3 +184,18 @@ def test_nan_equals_nan_and_a_bool_is_not_a_number() -> None:
     mixed = {"/a": {"x": NodeValue(True, "")}, "/b": {"x": NodeValue(1, "")}}
     (problem,) = check_rules([rule], mixed).problems
     assert problem.message == "broken: x differs across nodes: true on /a; 1 on /b"
+
+
+def test_same_reads_a_name_holding_a_dash(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    params = (
+        "/a:\n  ros__parameters:\n    max-speed: 1.0\n/b:\n  ros__parameters:\n    max-speed: 2.0\n"
+    )
+    rules = "  - {name: speed, same: max-speed, nodes: [/a, /b]}\n"
+    code, out = run(capsys, *_files(tmp_path, params, rules))
+    assert code == 1
+    assert out[0].endswith(
+        f"max-speed differs across nodes: 1.0 on /a from {tmp_path / 'params.yaml'}:3:5 (/a); "
+        f"2.0 on /b from {tmp_path / 'params.yaml'}:6:5 (/b)"
+    )

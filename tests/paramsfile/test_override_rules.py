@@ -6,12 +6,14 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from rclpy.impl.implementation_singleton import rclpy_implementation
 
 from genparams.api import load_schema
 from genparams.cli import main
 from genparams.outputs.explain_text import text_report
 from genparams.paramsfile.check_params import Bound
 from genparams.paramsfile.explain import explain, overrides_document
+from tests.support import ROOT, RosHarness
 
 CAMERA = """\
 genparams: 1
@@ -132,3 +134,43 @@ def test_rules_given_together_are_numbered_from_one() -> None:
         "fps        2.0    -p (rule 2, for /cam)  30.0 from default",
         'label      x      -p (rule 1, for /**)   "" from default',
     ]
+
+
+@pytest.mark.parametrize(
+    "name", ["max-speed", "9a", "a.9b", "input_shape/height", "a/b.c", "_a", "a.type", "a//b"]
+)
+def test_a_rule_name_is_read_as_rcl_reads_it(
+    name: str, ros: RosHarness, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A name with '-' or a digit first is refused by rcl's -p parser, and by explain."""
+    code, _out, err = run(capsys, "/cam", "-p", f"{name}:=1")
+    try:
+        node = ros.node("cam", args=["-p", f"{name}:=1"])
+    except rclpy_implementation.RCLInvalidROSArgsError:
+        assert (code, err) == (
+            2,
+            f"genparams explain: -p '{name}:=1': rcl reads a name of letters, digits and '_' "
+            "between '.' and '/' here (no digit first); give other names in a params file\n",
+        )
+    else:
+        assert name in node._parameter_overrides
+        assert (code, err) == (0, "")
+
+
+def test_names_holding_dashes_slashes_and_type_are_explained(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    case = ROOT / "tests" / "cases" / "ros_names"
+    params = case / "check_params" / "ros_names_good" / "params.yaml"
+    schema = str(case / "schema.yaml")
+    code, out, err = run(
+        capsys, "/teleop", "--schema", schema, "--params-file", str(params),
+        "-p", "input_shape/height:=100",
+    )  # fmt: skip
+    assert (code, err) == (0, "")
+    rows = {line.split()[0]: line.split()[1:3] for line in out[2:]}
+    assert rows["input_shape/height"] == ["100", "-p"]
+    assert rows["walk_button.axis_mappings.twist-linear-x.axis"][0] == "4"
+    assert rows["walk_button.type"][0] == "action"
+    assert rows["buttons.deadman-switch.type"][0] == "hold"
+    assert rows["max-speed"][0] == "2.5"

@@ -1,6 +1,6 @@
 """import-rclpy on shapes that were mishandled: a script's ``__main__`` block, a
 declare_parameters list imported in part, a node of which nothing imports, the
-messages of a per-item parameter, names holding ``/``."""
+messages of a per-item parameter, names holding ``/``, ``-`` or ``type``."""
 
 from __future__ import annotations
 
@@ -54,7 +54,7 @@ def test_a_list_imported_in_part_is_patched(
         '            "",\n'
         "            [\n"
         '                ("rate", 10.0),\n'
-        '                ("bad-name", 1),\n'
+        '                ("bad name", 1),\n'
         '                ("mode", "x"),\n'
         "            ],\n"
         "        )\n",
@@ -69,7 +69,7 @@ def test_a_list_imported_in_part_is_patched(
     if shutil.which("patch"):
         subprocess.run(["patch", "-p0", "--quiet"], input=diff, text=True, check=True)
         patched = source.read_text("utf-8")
-        assert '("bad-name", 1)' in patched and '("rate", 10.0)' not in patched
+        assert '("bad name", 1)' in patched and '("rate", 10.0)' not in patched
 
 
 def test_a_patch_that_changes_nothing_says_why(
@@ -79,7 +79,7 @@ def test_a_patch_that_changes_nothing_says_why(
     source.write_text(
         "class Loop:\n"
         "    def __init__(self):\n"
-        "        for n in ['a', 'bad-name']:\n"
+        "        for n in ['a', 'bad name']:\n"
         "            self.declare_parameter(n, 1)\n"
         "        self.declare_parameter('c', float(input()))\n",
         encoding="utf-8",
@@ -126,19 +126,36 @@ def test_a_per_item_warning_names_the_parameter_as_written(
     assert ": *: " not in err
 
 
-def test_a_name_holding_a_slash_is_left_out_with_its_reason(
+def test_names_holding_slashes_dashes_and_type_are_kept_as_rclpy_declares_them(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    source = tmp_path / "slash.py"
+    source = tmp_path / "names.py"
     source.write_text(
-        "class Slash:\n    def __init__(self):\n"
+        "class Names:\n    def __init__(self):\n"
         "        self.declare_parameter('input_shape/height', 480)\n"
-        "        self.declare_parameter('rate', 1.0)\n",
+        "        self.declare_parameter('walk.type', 'topic')\n"
+        "        self.declare_parameter('walk.axes.twist-linear-x', 1)\n"
+        "        self.declare_parameter('speed-max', 1.0)\n"
+        "        self.declare_parameter('speed_max', 2.0)\n"
+        "        self.declare_parameter('bad name', 1)\n",
         encoding="utf-8",
     )
     code, out, err = run(capsys, str(source))
-    assert code == 1 and "input_shape" not in out
-    assert "input_shape/height: warning: a name holding '/': rclpy accepts it" in err
+    parameters = yaml.safe_load(out)["parameters"]
+    assert parameters["input_shape/height"] == {"type": "int", "default": 480}
+    assert parameters["walk"] == {
+        "type": {"type": "string", "default": "topic"},
+        "axes": {"twist-linear-x": {"type": "int", "default": 1}},
+    }
+    assert parameters["speed-max"] == {"type": "double", "default": 1.0}
+    assert "speed_max" not in parameters and "bad name" not in parameters
+    assert code == 1
+    assert (
+        "speed_max: warning: 'speed_max' and 'speed-max' of one namespace would share the "
+        "Python attribute 'speed_max': parameter left out"
+    ) in err
+    assert "bad name: warning: not a name genparams declares (dotted names of letters" in err
+    assert err.endswith("imported 4 of 6 parameters; 2 left out (see warnings)\n")
 
 
 def test_a_default_computed_from_another_parameter_is_kept_with_a_note(
@@ -307,3 +324,25 @@ def test_a_base_class_defined_under_a_module_level_if_is_followed(
         "rate": {"type": "double", "default": 20.0},
         "topic": {"type": "string", "default": "/relay"},
     }
+
+
+def test_fields_of_a_mapped_group_sharing_an_attribute_are_left_out_with_the_reason(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = tmp_path / "gains.py"
+    source.write_text(
+        "class Gains:\n    def __init__(self):\n"
+        "        self.declare_parameter('joints', ['a', 'b'])\n"
+        "        for j in self.get_parameter('joints').value:\n"
+        "            self.declare_parameter(f'gains.{j}.p-max', 1.0)\n"
+        "            self.declare_parameter(f'gains.{j}.p_max', 2.0)\n",
+        encoding="utf-8",
+    )
+    code, out, err = run(capsys, str(source))
+    gains = yaml.safe_load(out)["parameters"]["gains"]
+    assert gains == {"for_each": "joints", "p-max": {"type": "double", "default": 1.0}}
+    assert code == 1
+    assert (
+        "gains.*.p_max: warning: 'p_max' and 'p-max' (of 'gains.*.p-max') of one namespace "
+        "would share the Python attribute 'p_max': parameter left out"
+    ) in err

@@ -191,7 +191,7 @@ def test_a_statement_declaring_several_stays_whole_when_one_is_left_out(
     source.write_text(
         "class M:\n"
         "    def __init__(self):\n"
-        "        for n in ['a', 'bad-name']:\n"
+        "        for n in ['a', 'bad name']:\n"
         "            self.declare_parameter(n, 1)\n"
         "        self.declare_parameter('keep', 2)",  # no newline at the end
         encoding="utf-8",

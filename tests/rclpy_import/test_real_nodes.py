@@ -105,6 +105,7 @@ def test_every_case_is_counted() -> None:
         "fleet_monitor": (1, 2, 0),
         "key_teleop": (9, 0, 0),
         "legacy_bridge": (8, 2, 2),
+        "pan_tilt": (5, 0, 0),
         "planner": (13, 0, 0),
         "sensor_hub": (5, 1, 0),
         "serial_driver": (2, 0, 0),

@@ -110,6 +110,7 @@ API = ["snapshot", "declare", "defaults", "on_change", "to_dict", "remote", "cha
 def test_keywords_builtins_and_api_names_are_usable(ros: RosHarness, tmp_path: Path) -> None:
     names = list(dict.fromkeys(KEYWORDS + BUILTINS))  # 'type' is a soft keyword from 3.12
     body = [f"  {name}: {{type: int, default: {i}}}" for i, name in enumerate(names)]
+    body.append("  to-dict: {type: int, default: -1}")  # '-' spelt '_': a method's name
     body.append("  api:")
     body += [f"    {name}: {{type: string, default: {name}}}" for name in API]
     schema = "genparams: 1\nname: names\nparameters:\n" + "\n".join(body) + "\n"
@@ -120,10 +121,12 @@ def test_keywords_builtins_and_api_names_are_usable(ros: RosHarness, tmp_path: P
     cfg = cls.declare(node)
     expected: dict[str, object] = {name: i for i, name in enumerate(names)}
     expected.update({f"api.{name}": name for name in API})
+    expected["to-dict"] = -1
     assert mismatches(read_back(ros, node, cfg), expected) == {}
     assert get_path(cfg, ("class_",)) == names.index("class")
     assert getattr(cfg, "print") == names.index("print")  # noqa: B009
     assert cfg.snapshot().to_dict()["api"]["snapshot"] == "snapshot"  # API still works
+    assert (get_path(cfg, ("to_dict_",)), cfg.to_dict()["to-dict"]) == (-1, -1)
     assert builtins.print is print  # nothing was rebound
 
 
@@ -133,7 +136,9 @@ def test_keywords_builtins_and_api_names_are_usable(ros: RosHarness, tmp_path: P
         ("__init__", "invalid name"),
         ("__class__", "invalid name"),
         ("_private", "invalid name"),
-        ("x-y", "invalid name"),
+        ("x y", "invalid name"),
+        ("x//y", "invalid name"),
+        ("-x", "invalid name"),
         ("a.b", "invalid name"),
     ],
 )

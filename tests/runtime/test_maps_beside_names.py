@@ -112,6 +112,16 @@ def test_a_set_reaches_the_live_view_and_the_change_record(
             "interfaces: item 'defaults' is already a name in the top level: an entry cannot "
             "share it (for_each)",
         ),
+        (  # entries and fields share the namespace's attributes: goal-time is goal_time
+            Parameter("joints", value=["goal-time"]),
+            "joints: item 'goal-time' and 'goal_time' of constraints share the Python "
+            "attribute 'goal_time': an entry cannot share it (for_each)",
+        ),
+        (
+            Parameter("joints", value=["from_"]),
+            "joints: item 'from_' and 'from' of constraints share the Python attribute "
+            "'from_': an entry cannot share it (for_each)",
+        ),
     ],
 )
 def test_a_key_cannot_repeat_a_name_beside_its_entries(

@@ -32,7 +32,19 @@ from genparams.runtime.core.naming import (
         ("a.b.c", False, True),
         ("_hidden", False, False),
         ("2d", False, False),
-        ("a-b", False, False),
+        ("a-b", True, True),
+        ("twist-linear-x", True, True),
+        ("walk.twist-linear-x.type", False, True),
+        ("input_shape/height", True, True),
+        ("a-", True, True),
+        ("a//b", False, False),
+        ("a/", False, False),
+        ("/a", False, False),
+        ("a/2d", False, False),
+        ("-a", False, False),
+        ("a b", False, False),
+        ("a:b", False, False),
+        ("ü", False, False),
         ("", False, False),
         ("a..b", False, False),
         ("a.", False, False),
@@ -97,6 +109,14 @@ def test_entry_key_text() -> None:
         ("changes", True, "changes_"),
         ("remote", True, "remote_"),
         ("speed", True, "speed"),
+        ("twist-linear-x", False, "twist_linear_x"),
+        ("input_shape/height", True, "input_shape_height"),
+        ("from-", False, "from_"),
+        ("class-", False, "class_"),
+        ("on-change", True, "on_change_"),
+        ("on-change", False, "on_change"),
+        ("int-", False, "int_"),
+        ("type", False, "type"),
     ],
 )
 def test_attribute_names(token: str, top_level: bool, attribute: str) -> None:
@@ -122,6 +142,11 @@ def test_generated_names(schema: str, pascal: str, cls: str, module: str) -> Non
     assert pascal_case(schema) == pascal
     assert class_name(schema) == cls
     assert module_name(schema) == module
+
+
+def test_group_class_words_split_at_dashes_and_slashes() -> None:
+    assert pascal_case("twist-linear-x") == "TwistLinearX"
+    assert pascal_case("input_shape/height") == "InputShapeHeight"
 
 
 @pytest.mark.parametrize(

@@ -7,7 +7,7 @@ import pytest
 from genparams.runtime.core.naming import check_prefix
 
 
-@pytest.mark.parametrize("prefix", ["", "camera", "robot.front_camera"])
+@pytest.mark.parametrize("prefix", ["", "camera", "robot.front_camera", "robot.front-camera"])
 def test_dotted_prefixes_are_accepted(prefix: str) -> None:
     assert check_prefix(prefix) == prefix
 
@@ -16,6 +16,6 @@ def test_a_bad_prefix_is_refused() -> None:
     with pytest.raises(ValueError) as caught:
         check_prefix("robot..camera")
     assert str(caught.value) == (
-        "invalid parameter prefix 'robot..camera': dot-separated names of letters, "
-        "digits and underscores, each starting with a letter"
+        "invalid parameter prefix 'robot..camera': dot-separated names of letters, digits, "
+        "'_' and '-', starting with a letter, in parts joined by single '/'"
     )

@@ -45,7 +45,7 @@ def test_for_each_must_name_a_fixed_string_array_parameter(tmp_path: Path) -> No
     for_each: gains.names
     p: {type: double, default: 1.0}
   by_bad_name:
-    for_each: "joints-2"
+    for_each: "joints 2"
     p: {type: double, default: 1.0}
 """
     assert problems(tmp_path, body) == [
@@ -59,7 +59,7 @@ def test_for_each_must_name_a_fixed_string_array_parameter(tmp_path: Path) -> No
         "mapped group 'gains', where every entry has its own copy; it must name a parameter "
         "outside every mapped group",
         "bad.yaml:22:15: parameters.by_bad_name.for_each: for_each must be a dotted "
-        "parameter name, got 'joints-2'",
+        "parameter name, got 'joints 2'",
     ]
 
 
@@ -89,7 +89,7 @@ def test_top_level_cannot_be_mapped_and_for_each_is_a_string(tmp_path: Path) -> 
 
 def test_bad_aliases(tmp_path: Path) -> None:
     body = """\
-  rate: {type: double, default: 1.0, aliases: [old-rate, joints, rate.old, gains.x, speed]}
+  rate: {type: double, default: 1.0, aliases: [old rate, joints, rate.old, gains.x, speed]}
   top_speed: {type: double, default: 1.0, aliases: [speed]}
   joints: {type: string_array, default: [a]}
   camera:
@@ -99,8 +99,9 @@ def test_bad_aliases(tmp_path: Path) -> None:
     p: {type: double, default: 1.0, aliases: [gains_p]}
 """
     assert problems(tmp_path, body) == [
-        "bad.yaml:4:48: parameters.rate.aliases[0]: invalid alias 'old-rate': dot-separated "
-        "names of letters, digits and underscores, each starting with a letter",
+        "bad.yaml:4:48: parameters.rate.aliases[0]: invalid alias 'old rate': dot-separated "
+        "names of letters, digits, '_' and '-', starting with a letter, in parts joined by "
+        "single '/'",
         "bad.yaml:4:58: parameters.rate.aliases[1]: alias 'joints' collides with parameter "
         "'joints'",
         "bad.yaml:4:66: parameters.rate.aliases[2]: alias 'rate.old' lies under parameter "

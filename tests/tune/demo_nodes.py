@@ -1,9 +1,9 @@
 """Real nodes for the tuning and audit tests, in a process of their own.
 
 ``python -m tests.tune.demo_nodes NAME:KIND ...`` starts one node per argument
-(KIND: camera, arm, motion, nonfinite, open, plain, loose, hostile, edges, checks, or wideN with
-N parameters) and prints "ready" once every node is declared. ROS arguments for every node
-follow ``--``.
+(KIND: camera, arm, motion, nonfinite, open, names, plain, loose, hostile, edges, checks, or
+wideN with N parameters) and prints "ready" once every node is declared. ROS arguments for
+every node follow ``--``.
 """
 
 from __future__ import annotations
@@ -29,6 +29,7 @@ SCHEMAS = {
     "motion": ROOT / "examples/motion/motion.yaml",
     "nonfinite": ROOT / "tests/tune/nonfinite.yaml",
     "open": ROOT / "tests/cases/open_groups/schema.yaml",  # its keys come from a params file
+    "names": ROOT / "tests/cases/ros_names/schema.yaml",  # names with '-', '/' and type
 }
 
 

@@ -5,11 +5,22 @@ from __future__ import annotations
 import keyword
 import re
 import sys
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 
-# One token of a ROS parameter name. ROS also accepts a leading underscore;
-# genparams reserves those for the generated classes' internals.
-ROS_TOKEN = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+# One token of a parameter name: the text between two dots. rclpy declares any
+# non-empty name and rcl's params-file parser takes any key, so the rule is
+# genparams' own: letters, digits, '_' and '-', starting with a letter, in parts
+# joined by single '/' (rcl's `-p a/b:=1` reads those too; it refuses '-').
+# ROS also accepts a leading underscore; genparams reserves those for the
+# generated classes' internals.
+ROS_TOKEN = re.compile(r"[A-Za-z][A-Za-z0-9_-]*(?:/[A-Za-z][A-Za-z0-9_-]*)*")
+# What rcl's `-p NAME:=VALUE` reads as NAME: tokens of letters, digits and '_' (no digit
+# first) between '.' and '/'. Names with '-' come from params files or parameter services.
+COMMAND_LINE_NAME = re.compile(r"[./]*[A-Za-z_][A-Za-z0-9_]*(?:[./]+[A-Za-z_][A-Za-z0-9_]*)*[./]*")
+NAME_RULE = "letters, digits, '_' and '-', starting with a letter, in parts joined by single '/'"
+# The characters of a name a Python attribute cannot hold: each becomes '_'.
+_NOT_IN_ATTRIBUTES = str.maketrans({"-": "_", "/": "_"})
+_WORD_SEPARATORS = re.compile(r"[_/-]")
 # Schema names and rule names: snake_case (schemas/genparams.schema.json states it too).
 SNAKE_CASE = re.compile(r"[a-z][a-z0-9_]*")
 SCHEMA_NAME = SNAKE_CASE
@@ -37,10 +48,7 @@ def is_ros_token(name: str) -> bool:
 def check_prefix(prefix: str) -> str:
     """``prefix`` if it is empty or a dotted ROS name (a class's parameters live under it)."""
     if prefix and not all(is_ros_token(part) for part in prefix.split(".")):
-        raise ValueError(
-            f"invalid parameter prefix {prefix!r}: dot-separated names of letters, "
-            "digits and underscores, each starting with a letter"
-        )
+        raise ValueError(f"invalid parameter prefix {prefix!r}: dot-separated names of {NAME_RULE}")
     return prefix
 
 
@@ -94,20 +102,42 @@ def entry_key_problem(keys: Sequence[str], maps: str) -> str | None:
     return None
 
 
+def entry_beside_problem(keys: Sequence[str], map_path: str, names: Collection[str]) -> str | None:
+    """Why an item cannot key an entry of the in-place map at ``map_path``, beside its fixed
+    ``names``: it is one of them, or spelt as one in Python (``twist-x`` beside
+    ``twist_x``: entries and fields share the namespace's attributes). None when it can."""
+    where = map_path or "the top level"
+    top = not map_path
+    spelt = {attribute_name(name, top_level=top): name for name in names}
+    for key in keys:
+        if key in names:
+            return f"item {key!r} is already a name in {where}: an entry cannot share it"
+        attribute = attribute_name(key, top_level=top)
+        if attribute in spelt:
+            return (
+                f"item {key!r} and {spelt[attribute]!r} of {where} share the Python attribute "
+                f"{attribute!r}: an entry cannot share it"
+            )
+    return None
+
+
 def attribute_name(ros_token: str, *, top_level: bool = False) -> str:
     """Python attribute for a ROS name token; the ROS name itself never changes.
 
-    A trailing underscore (PEP 8) is added to Python keywords (``from_``), to
-    names the generated class bodies use (``int_``), and at the top level to
-    the generated class's methods (``defaults_``, ``snapshot_``).
+    '-' and '/' become '_' (``twist-linear-x`` -> ``twist_linear_x``). A trailing
+    underscore (PEP 8) is added to Python keywords (``from_``), to names the
+    generated class bodies use (``int_``), and at the top level to the generated
+    class's methods (``defaults_``, ``snapshot_``). Two names of one namespace
+    with one attribute are a schema error.
     """
+    attribute = ros_token.translate(_NOT_IN_ATTRIBUTES)
     if (
-        keyword.iskeyword(ros_token)
-        or ros_token in SHADOWING
-        or (top_level and ros_token in RESERVED_TOP_LEVEL)
+        keyword.iskeyword(attribute)
+        or attribute in SHADOWING
+        or (top_level and attribute in RESERVED_TOP_LEVEL)
     ):
-        return ros_token + "_"
-    return ros_token
+        return attribute + "_"
+    return attribute
 
 
 def attribute_parts(ros_name: str) -> tuple[str, ...]:
@@ -120,7 +150,8 @@ def attribute_parts(ros_name: str) -> tuple[str, ...]:
 
 
 def pascal_case(name: str) -> str:
-    return "".join(part[:1].upper() + part[1:] for part in name.split("_") if part)
+    """``twist-linear_x`` -> ``TwistLinearX``: words split at '_', '-' and '/'."""
+    return "".join(part[:1].upper() + part[1:] for part in _WORD_SEPARATORS.split(name) if part)
 
 
 def class_name(schema_name: str) -> str:

@@ -11,6 +11,7 @@ from genparams.runtime.core.naming import (
     MAP_SLOT,
     attribute_name,
     attribute_parts,
+    entry_beside_problem,
     entry_key_problem,
 )
 from genparams.runtime.core.param_checks import (
@@ -200,10 +201,8 @@ class EntryKeys(Record):
     def __call__(self, value: Any) -> str | None:
         reason = entry_key_problem(value, self.maps)
         for map_path, names in self.taken if reason is None else ():
-            clash = next((key for key in value if key in names), None)
-            if clash is not None:
-                where = map_path or "the top level"
-                reason = f"item {clash!r} is already a name in {where}: an entry cannot share it"
+            reason = entry_beside_problem(value, map_path, names)
+            if reason is not None:
                 break
         return None if reason is None else f"{reason} ({self.rule})"
 
