@@ -124,13 +124,15 @@ def served_node(ros: RosHarness, name: str) -> Iterator[tuple[Node, AsyncParamet
     client_node = Node(unique_name(f"{name}_client"), context=ros.context)
     executor.add_node(node)
     executor.add_node(client_node)
-    threading.Thread(target=executor.spin, daemon=True).start()
+    spinning = threading.Thread(target=executor.spin, daemon=True)
+    spinning.start()
     try:
         service = AsyncParameterClient(client_node, node.get_fully_qualified_name())
         assert service.wait_for_services(timeout_sec=10.0)
         yield node, service
     finally:
         executor.shutdown()
+        spinning.join(timeout=30.0)  # nothing is destroyed under the executor's wait
         node.destroy_node()
         client_node.destroy_node()
 
