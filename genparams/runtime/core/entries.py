@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import itertools
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
-from dataclasses import replace
 from typing import Any
 
 from genparams.runtime.core.naming import ENTRY_KEY, ENTRY_KEY_RULE, OVERRIDE_KEYS, is_entry_key
@@ -45,7 +44,7 @@ def instantiate(template: CompiledParam, keys: Sequence[str]) -> CompiledParam:
     """The parameter of one entry: each ``*`` of the template replaced by the next key."""
     name = ".".join(_fill(template.name.split("."), keys))
     path = tuple(_fill(template.attribute_path, keys))
-    return replace(template, spec=template.spec.replaced(name=name), attribute_path=path)
+    return template.with_path(name, path)
 
 
 def key_slot(compiled: CompiledSchema, map_path: str) -> str:

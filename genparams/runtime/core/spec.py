@@ -19,6 +19,7 @@ from genparams.runtime.core.param_checks import (
     checks_and_texts,
     description_text,
 )
+from genparams.runtime.core.param_spec import ParamOptions, ParamSpec
 from genparams.runtime.core.records import Record, store
 from genparams.runtime.core.types import TYPES, ParamType
 from genparams.runtime.core.validators import Bounds, RosRange, Validator
@@ -26,114 +27,6 @@ from genparams.runtime.core.validators import Bounds, RosRange, Validator
 if TYPE_CHECKING:
     from genparams.runtime.core.rules import CompiledRule
     from genparams.runtime.core.tree import Group
-
-
-class ParamSpec(Record):
-    """One parameter as a generated module describes it (a frozen record)."""
-
-    _fields = (
-        "name",
-        "type",
-        "default",
-        "required",
-        "description",
-        "read_only",
-        "unit",
-        "range",
-        "choices",
-        "validators",
-        "additional_constraints",
-        "deprecated",
-        "aliases",
-        "configure_only",
-        "adopt",
-        "optional",
-        "when",
-    )
-    __slots__ = _fields
-    name: str  # dotted ROS name relative to the prefix
-    type: str  # one of the nine schema type names
-    default: Any
-    required: bool
-    description: str
-    read_only: bool
-    unit: str
-    # (min, max) or (min, max, step); a missing step means any value in between
-    range: tuple[Any, Any] | tuple[Any, Any, Any] | None
-    choices: tuple[Any, ...] | None
-    validators: tuple[tuple[str, Any], ...]
-    additional_constraints: str
-    deprecated: str
-    aliases: tuple[str, ...]  # old dotted names, relative to the prefix
-    configure_only: bool  # lifecycle nodes: set only while unconfigured or inactive
-    # declared first by other code of the node: taken over, not refused
-    adopt: bool
-    # declared by type only: None (NOT_SET on the node) until given a value
-    optional: bool
-    # declared only when each named parameter holds one of its values: (("mode", ("advanced",)),)
-    when: tuple[tuple[str, tuple[Any, ...]], ...]
-
-    def __init__(
-        self,
-        name: str,
-        type: str,
-        default: Any = None,
-        required: bool = False,
-        description: str = "",
-        read_only: bool = False,
-        unit: str = "",
-        range: tuple[Any, Any] | tuple[Any, Any, Any] | None = None,
-        choices: tuple[Any, ...] | None = None,
-        validators: tuple[tuple[str, Any], ...] = (),
-        additional_constraints: str = "",
-        deprecated: str = "",
-        aliases: tuple[str, ...] = (),
-        configure_only: bool = False,
-        adopt: bool = False,
-        optional: bool = False,
-        when: tuple[tuple[str, tuple[Any, ...]], ...] = (),
-    ) -> None:
-        store(self, "name", name)
-        store(self, "type", type)
-        store(self, "default", default)
-        store(self, "required", required)
-        store(self, "description", description)
-        store(self, "read_only", read_only)
-        store(self, "unit", unit)
-        store(self, "range", range)
-        store(self, "choices", choices)
-        store(self, "validators", validators)
-        store(self, "additional_constraints", additional_constraints)
-        store(self, "deprecated", deprecated)
-        store(self, "aliases", aliases)
-        store(self, "configure_only", configure_only)
-        store(self, "adopt", adopt)
-        store(self, "optional", optional)
-        store(self, "when", when)
-
-    def replaced(self, **changes: Any) -> ParamSpec:
-        """A copy with ``changes`` (field name -> value), as dataclasses.replace makes."""
-        return ParamSpec(**{**dict(zip(self._fields, self._values(), strict=True)), **changes})
-
-    def declared_with(self, values: Mapping[str, Any]) -> bool:
-        """Whether the condition (``when``) holds for ``values``, by relative name."""
-        return all(values.get(name) in allowed for name, allowed in self.when)
-
-    @property
-    def condition_text(self) -> str:
-        """``when`` in words: "declared only when mode is 'advanced'"."""
-        parts = [
-            f"{name} is {' or '.join(_value_words(value) for value in allowed)}"
-            for name, allowed in self.when
-        ]
-        return "declared only when " + " and ".join(parts) if parts else ""
-
-
-def _value_words(value: Any) -> str:
-    """A condition's value as a params file spells it: true, 2.5, 'advanced'."""
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    return repr(value)
 
 
 class RuleSpec(Record):
@@ -180,6 +73,23 @@ class SchemaSpec(Record):
         store(self, "maps", {} if maps is None else maps)
         store(self, "rules", rules)
 
+    @classmethod
+    def table(
+        cls,
+        name: str,
+        options: tuple[ParamOptions, ...],
+        rows: tuple[tuple[str, Any, int], ...],
+        groups: Mapping[str, type[Group]],
+        maps: Mapping[str, str] | None = None,
+        rules: tuple[RuleSpec, ...] = (),
+    ) -> SchemaSpec:
+        """The spec of a generated module: each parameter a row ``(name, default, index)``
+        of the table, ``index`` naming its entry of ``options`` (shared by every row of
+        the same rules)."""
+        row = ParamSpec.row
+        parameters = tuple([row(name, default, options[index]) for name, default, index in rows])
+        return cls(name, parameters, groups, maps, rules)
+
 
 class EntryKeys(Record):
     """The items of a ``for_each`` parameter name mapped entries: distinct, of ENTRY_KEY_RULE."""
@@ -223,7 +133,10 @@ class CompiledParam:
 
     spec: ParamSpec
     type: ParamType
-    attribute_path: tuple[str, ...]
+    # The attribute path when it is not the ROS name's parts (a keyword spelled ``from_``,
+    # the ``_map`` before entries read by key); None for most parameters, whose path is
+    # made on each read: at 10,000 parameters the tuples were 0.7 MiB of the process.
+    own_path: tuple[str, ...] | None
     checks: tuple[Validator, ...]
     # The descriptor's texts, made once (and shared between parameters that read the same):
     # ``additional_constraints`` (``constraints`` less a scalar range, which travels in the
@@ -234,6 +147,16 @@ class CompiledParam:
     @property
     def name(self) -> str:
         return self.spec.name
+
+    @property
+    def attribute_path(self) -> tuple[str, ...]:
+        """The attributes from the top level to this parameter's value."""
+        path = self.own_path
+        return tuple(self.spec.name.split(".")) if path is None else path
+
+    def with_path(self, name: str, path: tuple[str, ...]) -> CompiledParam:
+        """This parameter under another ``name`` (an entry of a template) at ``path``."""
+        return replace(self, spec=self.spec.replaced(name=name), own_path=own_path(name, path))
 
     def from_ros(self, value: Any) -> Any:
         """A ROS value in typed-view form; None (NOT_SET) stays None for an optional parameter."""
@@ -281,12 +204,17 @@ class CompiledParam:
         return tuple(parts)
 
 
+def own_path(name: str, path: tuple[str, ...]) -> tuple[str, ...] | None:
+    """``path`` when it is not the parts of ``name``, else None (made again on each read)."""
+    return None if path == tuple(name.split(".")) else path
+
+
 def compile_param(spec: ParamSpec, extra_checks: tuple[Validator, ...] = ()) -> CompiledParam:
     checks, constraints_text = checks_and_texts(spec, extra_checks)
     return CompiledParam(
         spec=spec,
         type=TYPES[spec.type],
-        attribute_path=attribute_parts(spec.name),
+        own_path=own_path(spec.name, attribute_parts(spec.name)),
         checks=checks,
         constraints_text=constraints_text,
         descriptor_description=description_text(spec.description, spec.unit),
@@ -401,7 +329,8 @@ def _compile(spec: SchemaSpec) -> CompiledSchema:
             extra = (EntryKeys(", ".join(m or "the top level" for m in maps), taken),)
         compiled = compile_param(param_spec, extra)
         if in_place:
-            compiled = replace(compiled, attribute_path=attribute_path(param_spec.name, in_place))
+            path = attribute_path(param_spec.name, in_place)
+            compiled = replace(compiled, own_path=own_path(param_spec.name, path))
         is_template = ENTRY_KEY in param_spec.name.split(".")
         (templates if is_template else parameters)[param_spec.name] = compiled
         aliases.update(dict.fromkeys(param_spec.aliases, param_spec.name))
