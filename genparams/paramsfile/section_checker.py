@@ -61,7 +61,7 @@ class SectionChecker:
                     )
                     continue
             kept.append(check)
-        return dataclasses.replace(param, checks=tuple(kept))
+        return param.with_checks(tuple(kept))
 
     def run(self, applied: Sequence[Section], nodes: Sequence[tuple[str, list[Section]]]) -> None:
         """Check the entries of ``applied``, then each node's required parameters and rules.

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Collection, Iterable, Mapping
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 from genparams.runtime.core.naming import (
@@ -16,12 +16,11 @@ from genparams.runtime.core.naming import (
 )
 from genparams.runtime.core.param_checks import (
     CONFIGURE_ONLY_TEXT,
-    checks_and_texts,
-    description_text,
 )
+from genparams.runtime.core.param_kind import ParamKind, kind_of
 from genparams.runtime.core.param_spec import ParamOptions, ParamSpec
 from genparams.runtime.core.records import Record, store
-from genparams.runtime.core.types import TYPES, ParamType
+from genparams.runtime.core.types import ParamType
 from genparams.runtime.core.validators import Bounds, RosRange, Validator
 
 if TYPE_CHECKING:
@@ -132,31 +131,48 @@ class CompiledParam:
     """
 
     spec: ParamSpec
-    type: ParamType
-    # The attribute path when it is not the ROS name's parts (a keyword spelled ``from_``,
-    # the ``_map`` before entries read by key); None for most parameters, whose path is
-    # made on each read: at 10,000 parameters the tuples were 0.7 MiB of the process.
-    own_path: tuple[str, ...] | None
-    checks: tuple[Validator, ...]
-    # The descriptor's texts, made once (and shared between parameters that read the same):
-    # ``additional_constraints`` (``constraints`` less a scalar range, which travels in the
-    # descriptor's own range fields) and the description with its unit.
-    constraints_text: str = ""
-    descriptor_description: str = ""
+    kind: ParamKind  # shared with every parameter of the same options
 
     @property
     def name(self) -> str:
         return self.spec.name
 
     @property
+    def type(self) -> ParamType:
+        return self.kind.type
+
+    @property
+    def checks(self) -> tuple[Validator, ...]:
+        return self.kind.checks
+
+    @property
+    def constraints_text(self) -> str:
+        """The descriptor's ``additional_constraints``: ``constraints`` less a scalar range,
+        which travels in the descriptor's own range fields."""
+        return self.kind.constraints_text
+
+    @property
+    def descriptor_description(self) -> str:
+        """The descriptor's description: the text with its unit."""
+        return self.kind.descriptor_description
+
+    @property
     def attribute_path(self) -> tuple[str, ...]:
         """The attributes from the top level to this parameter's value."""
-        path = self.own_path
+        path = self.kind.own_path
         return tuple(self.spec.name.split(".")) if path is None else path
 
     def with_path(self, name: str, path: tuple[str, ...]) -> CompiledParam:
         """This parameter under another ``name`` (an entry of a template) at ``path``."""
-        return replace(self, spec=self.spec.replaced(name=name), own_path=own_path(name, path))
+        kind = self.kind
+        path_of_its_own = own_path(name, path)
+        if path_of_its_own is not None or kind.own_path is not None:
+            kind = kind.with_changes(own_path=path_of_its_own)
+        return CompiledParam(self.spec.replaced(name=name), kind)
+
+    def with_checks(self, checks: tuple[Validator, ...]) -> CompiledParam:
+        """This parameter with other checks (those a tool can run where it is)."""
+        return CompiledParam(self.spec, self.kind.with_changes(checks, self.kind.own_path))
 
     def from_ros(self, value: Any) -> Any:
         """A ROS value in typed-view form; None (NOT_SET) stays None for an optional parameter."""
@@ -210,15 +226,9 @@ def own_path(name: str, path: tuple[str, ...]) -> tuple[str, ...] | None:
 
 
 def compile_param(spec: ParamSpec, extra_checks: tuple[Validator, ...] = ()) -> CompiledParam:
-    checks, constraints_text = checks_and_texts(spec, extra_checks)
-    return CompiledParam(
-        spec=spec,
-        type=TYPES[spec.type],
-        own_path=own_path(spec.name, attribute_parts(spec.name)),
-        checks=checks,
-        constraints_text=constraints_text,
-        descriptor_description=description_text(spec.description, spec.unit),
-    )
+    kind = kind_of(spec, extra_checks)
+    path = own_path(spec.name, attribute_parts(spec.name))
+    return CompiledParam(spec, kind if path is None else kind.with_changes(own_path=path))
 
 
 @dataclass(frozen=True)
@@ -329,8 +339,9 @@ def _compile(spec: SchemaSpec) -> CompiledSchema:
             extra = (EntryKeys(", ".join(m or "the top level" for m in maps), taken),)
         compiled = compile_param(param_spec, extra)
         if in_place:
-            path = attribute_path(param_spec.name, in_place)
-            compiled = replace(compiled, own_path=own_path(param_spec.name, path))
+            path = own_path(param_spec.name, attribute_path(param_spec.name, in_place))
+            if path != compiled.kind.own_path:
+                compiled = CompiledParam(param_spec, compiled.kind.with_changes(own_path=path))
         is_template = ENTRY_KEY in param_spec.name.split(".")
         (templates if is_template else parameters)[param_spec.name] = compiled
         aliases.update(dict.fromkeys(param_spec.aliases, param_spec.name))
