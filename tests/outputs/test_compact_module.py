@@ -13,6 +13,7 @@ import types
 from pathlib import Path
 
 from genparams.runtime import ParamOptions, ParamSpec
+from genparams.runtime.core.spec import compile_schema
 from tests.golden import ROOT
 from tests.support import load_generated
 
@@ -123,3 +124,17 @@ def test_a_param_spec_reads_and_copies_as_one_record() -> None:
     assert spec.replaced(unit="kHz").unit == "kHz" and spec.unit == "Hz"
     assert ParamSpec.row("camera.fps", 30.0, spec.options) == spec
     assert spec != ParamSpec("camera.fps", "double", default=30.0, range=(1.0, 60.0))
+
+
+def test_compiled_parameters_share_a_kind_and_keep_only_paths_of_their_own(
+    tmp_path: Path,
+) -> None:
+    compiled = compile_schema(_module(tmp_path).ShapesParams._SPEC).parameters
+    assert compiled["front.x"].kind is compiled["arm.front.x"].kind
+    assert compiled["front.x"].checks is compiled["leg.front.x"].checks
+    assert compiled["arm.front.x"].attribute_path == ("arm", "front", "x")
+    left, right = compiled["left.lambda"], compiled["right.lambda_"]
+    assert left.spec.options is right.spec.options  # both a plain int
+    assert left.attribute_path == ("left", "lambda_")  # a keyword: its own path, kept
+    assert right.attribute_path == ("right", "lambda_")
+    assert left.kind.own_path == ("left", "lambda_") and right.kind.own_path is None
