@@ -30,7 +30,7 @@ class SpecTable:
 
 
 def _options_row(parameter: Parameter) -> OptionsRow:
-    options = tuple((key, value) for key, value in parameter.spec_options if key not in {"default"})
+    options = tuple((key, value) for key, value in parameter.spec_options if key != "default")
     return OptionsRow(parameter.type.name, options)
 
 

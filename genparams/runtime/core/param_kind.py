@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from genparams.runtime.core.param_checks import checks_and_texts, description_text
 from genparams.runtime.core.param_spec import ParamOptions, ParamSpec
+from genparams.runtime.core.records import store
 from genparams.runtime.core.types import TYPES, ParamType
 from genparams.runtime.core.validators import Validator
 
@@ -19,6 +20,11 @@ class ParamKind:
     that is not its name's parts. Shared; never changed once made."""
 
     __slots__ = ("checks", "constraints_text", "descriptor_description", "own_path", "type")
+    type: ParamType
+    checks: tuple[Validator, ...]
+    constraints_text: str
+    descriptor_description: str
+    own_path: tuple[str, ...] | None
 
     def __init__(
         self,
@@ -28,14 +34,17 @@ class ParamKind:
         descriptor_description: str,
         own_path: tuple[str, ...] | None = None,
     ) -> None:
-        self.type = type
-        self.checks = checks
+        store(self, "type", type)
+        store(self, "checks", checks)
         # ``additional_constraints`` of the descriptor (``constraints`` less a scalar range,
         # which travels in the descriptor's own range fields), and its description with unit.
-        self.constraints_text = constraints_text
-        self.descriptor_description = descriptor_description
-        # None for most parameters: their path is their ROS name's parts, made on each read.
-        self.own_path = own_path
+        store(self, "constraints_text", constraints_text)
+        store(self, "descriptor_description", descriptor_description)
+        # None for most parameters: their path is their ROS name's parts.
+        store(self, "own_path", own_path)
+
+    def __setattr__(self, name: str, value: object) -> None:
+        raise AttributeError(f"a ParamKind is shared between parameters: {name} is read-only")
 
     def with_changes(
         self, checks: tuple[Validator, ...] | None = None, own_path: tuple[str, ...] | None = None
