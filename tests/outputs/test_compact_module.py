@@ -12,6 +12,7 @@ import sys
 import types
 from pathlib import Path
 
+import genparams
 from genparams.runtime import ParamOptions, ParamSpec
 from genparams.runtime.core.spec import compile_schema
 from tests.golden import ROOT
@@ -138,3 +139,34 @@ def test_compiled_parameters_share_a_kind_and_keep_only_paths_of_their_own(
     assert left.attribute_path == ("left", "lambda_")  # a keyword: its own path, kept
     assert right.attribute_path == ("right", "lambda_")
     assert left.kind.own_path == ("left", "lambda_") and right.kind.own_path is None
+
+
+def test_a_table_of_one_parameter_is_laid_out_as_ruff_lays_it_out(tmp_path: Path) -> None:
+    # A one-item tuple's comma is no magic trailing comma: ruff joins it when it fits.
+    long_default = f'["{"a" * 60}", "{"b" * 60}"]'
+    for name, kind, default in (
+        ("only", "string", '"x"'),
+        ("long_" * 9, "string_array", long_default),
+    ):
+        entry = f"{{type: {kind}, default: {default}}}"
+        schema = f"genparams: 1\nname: one\nparameters:\n  {name}: {entry}\n"
+        module = tmp_path / "one_params.py"
+        module.write_text(genparams.generate("one.yaml", schema), encoding="utf-8")
+        result = subprocess.run(
+            [
+                sys.executable,
+                "-m",
+                "ruff",
+                "format",
+                "--check",
+                "--diff",
+                "--no-cache",
+                str(module),
+            ],
+            cwd=ROOT,
+            capture_output=True,
+            text=True,
+            timeout=120,
+            check=False,
+        )
+        assert result.returncode == 0, result.stdout + result.stderr
