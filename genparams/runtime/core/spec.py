@@ -14,9 +14,7 @@ from genparams.runtime.core.naming import (
     attribute_parts,
     entry_key_problem,
 )
-from genparams.runtime.core.param_checks import (
-    CONFIGURE_ONLY_TEXT,
-)
+from genparams.runtime.core.param_checks import CONFIGURE_ONLY_TEXT
 from genparams.runtime.core.param_kind import ParamKind, kind_of
 from genparams.runtime.core.param_spec import ParamOptions, ParamSpec
 from genparams.runtime.core.records import Record, store
