@@ -10,7 +10,7 @@ from typing import Any
 import jinja2
 
 from genparams._version import __version__
-from genparams.outputs import markup
+from genparams.outputs import markup, module_layout
 from genparams.outputs.docs_model import DocsPage
 from genparams.outputs.params_file import ParamsFile
 from genparams.runtime import RUNTIME_API
@@ -127,6 +127,11 @@ def one_line(text: str, indent: int) -> str:
     return text + _KEEP_AS_IS if indent + markup.column_width(text) > LINE_LENGTH else text
 
 
+def wrapped(value: Any, indent: int) -> str:
+    """A literal on its own line at ``indent``, ending with a comma."""
+    return wrapped_literal(value, indent, indent, 1)
+
+
 def keyword_argument(option: tuple[str, Any], indent: int) -> str:
     """``key=value`` for a line at ``indent`` that ends with a comma."""
     key, value = option
@@ -154,6 +159,7 @@ def environment() -> jinja2.Environment:
     env.filters["keyword_argument"] = keyword_argument
     env.filters["assignment"] = assignment
     env.filters["one_line"] = one_line
+    env.filters["wrapped"] = wrapped
     env.filters.update(
         md_text=markup.md_text,
         md_paragraphs=markup.md_paragraphs,
@@ -167,7 +173,10 @@ def environment() -> jinja2.Environment:
 
 def render_module(schema: Schema) -> str:
     template = environment().get_template("module.py.j2")
-    return template.render(schema=schema, version=__version__, runtime_api=RUNTIME_API)
+    layout = module_layout.layout(schema)
+    return template.render(
+        schema=schema, layout=layout, version=__version__, runtime_api=RUNTIME_API
+    )
 
 
 def render_params_file(params_file: ParamsFile) -> str:

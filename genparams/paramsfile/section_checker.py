@@ -59,7 +59,7 @@ class SectionChecker:
                     )
                     continue
             kept.append(check)
-        return param.replaced(checks=tuple(kept))
+        return param.with_checks(tuple(kept))
 
     def run(self, applied: Sequence[Section], nodes: Sequence[tuple[str, list[Section]]]) -> None:
         """Check the entries of ``applied``, then each node's required parameters and rules.

@@ -7,7 +7,8 @@ from genparams.runtime.core.errors import (
     RemoteParameterError,
     RemoteSetError,
 )
-from genparams.runtime.core.spec import ParamSpec, RuleSpec, SchemaSpec
+from genparams.runtime.core.param_spec import ParamOptions, ParamSpec
+from genparams.runtime.core.spec import RuleSpec, SchemaSpec
 from genparams.runtime.core.tree import Group, GroupMap
 from genparams.runtime.core.types import RosValue
 from genparams.runtime.params import Params
@@ -15,7 +16,7 @@ from genparams.runtime.params import Params
 # What a generated module may rely on: the names below and the fields of the specs.
 # Raise it on any change a module generated before could not run with; every
 # generated module checks it at import and asks to be regenerated on a mismatch.
-RUNTIME_API = 1
+RUNTIME_API = 2
 
 __all__ = [
     "RUNTIME_API",
@@ -24,6 +25,7 @@ __all__ = [
     "DetachedSnapshotError",
     "Group",
     "GroupMap",
+    "ParamOptions",
     "ParamSpec",
     "ParameterDeclarationError",
     "Params",

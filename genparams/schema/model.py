@@ -12,7 +12,8 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 from genparams.runtime.core.naming import ENTRY_KEY, OVERRIDE_KEYS
-from genparams.runtime.core.spec import CompiledParam, EntryKeys, ParamSpec, compile_param
+from genparams.runtime.core.param_spec import ParamSpec
+from genparams.runtime.core.spec import CompiledParam, EntryKeys, compile_param
 from genparams.runtime.core.types import ParamType
 from genparams.schema.errors import Location
 

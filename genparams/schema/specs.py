@@ -8,10 +8,10 @@ worded, exactly as it is on a robot.
 
 from __future__ import annotations
 
+from genparams.runtime.core.param_spec import ParamSpec
 from genparams.runtime.core.spec import (
     CompiledParam,
     CompiledSchema,
-    ParamSpec,
     RuleSpec,
     SchemaSpec,
     compile_schema,

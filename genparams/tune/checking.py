@@ -133,7 +133,7 @@ def compile_class(body: Mapping[str, Any], trusted: Sequence[str]) -> ClassCheck
 
     def runnable_here(param: CompiledParam) -> CompiledParam:
         checks = tuple(runnable(check, trusted) for check in param.checks)
-        return param if checks == param.checks else param.replaced(checks=checks)
+        return param if checks == param.checks else param.with_checks(checks)
 
     compiled = compiled.replaced(
         parameters={n: runnable_here(p) for n, p in compiled.parameters.items()},

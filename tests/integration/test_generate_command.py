@@ -94,8 +94,8 @@ def test_check_fails_with_unified_diff_on_stale_output(
     assert main(["generate", str(schema), "-o", str(out), "--check"]) == 1
     diff = capsys.readouterr().out
     assert diff.startswith(f"--- {out} (on disk)\n+++ {out} (generated)\n@@ ")
-    assert "\n-                default=30.0,\n" in diff
-    assert "\n+                default=25.0,\n" in diff
+    assert '\n-            ("camera.fps", 30.0, ' in diff
+    assert '\n+            ("camera.fps", 25.0, ' in diff
     assert out.read_text(encoding="utf-8") == committed  # --check never writes
 
 
@@ -138,8 +138,8 @@ def test_no_schema_check_fails_with_diff_then_passes_after_generate(project: Pat
     stale = genparams_process("generate", "--check", cwd=project)
     assert stale.returncode == 1
     assert "--- camera_node/camera_driver_params.py (on disk)" in stale.stdout
-    assert "\n-                default=640,\n" in stale.stdout
-    assert "\n+                default=800,\n" in stale.stdout
+    assert '\n-            ("camera.width", 640, ' in stale.stdout
+    assert '\n+            ("camera.width", 800, ' in stale.stdout
     assert genparams_process("generate", cwd=project).returncode == 0
     fresh = genparams_process("generate", "--check", cwd=project)
     assert (fresh.returncode, fresh.stdout) == (0, "")

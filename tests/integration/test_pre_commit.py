@@ -92,6 +92,6 @@ def test_check_hook_passes_on_fresh_modules_and_fails_with_diff(tmp_path: Path) 
     assert stale.returncode == 1
     assert "Failed" in stale.stdout
     assert "--- camera_node/camera_driver_params.py (on disk)" in stale.stdout
-    assert "+                default=800," in stale.stdout
+    assert '+            ("camera.width", 800, ' in stale.stdout
     assert "params/bad.yaml:4:22: camera.encoding: must be one of" in stale.stdout
     assert "params/good.yaml" not in stale.stdout

@@ -8,17 +8,17 @@ from typing import ClassVar
 
 import genparams.runtime as _runtime
 
-# The runtime reads the spec below as API 1 wrote it: refuse any other.
+# The runtime reads the spec below as API 2 wrote it: refuse any other.
 _runtime_api = getattr(_runtime, "RUNTIME_API", None)
-if _runtime_api != 1:
+if _runtime_api != 2:
     raise ImportError(
-        f"{__name__} was generated for genparams runtime API 1, but the "
+        f"{__name__} was generated for genparams runtime API 2, but the "
         f"installed genparams runtime has API {_runtime_api}: regenerate with genparams generate"
     )
 
 from genparams.runtime import Group as _Group
+from genparams.runtime import ParamOptions as _ParamOptions
 from genparams.runtime import Params as _Params
-from genparams.runtime import ParamSpec as _ParamSpec
 from genparams.runtime import SchemaSpec as _SchemaSpec
 
 __all__ = [
@@ -91,82 +91,77 @@ class CameraDriverParams(_Params):
     topics: tuple[str, ...]
     "Topics to subscribe to.\n\nType: string_array. Default: ('/sensor/data', '/robot/status'). Constraints: not empty; no repeated items; matches '^/'."
 
-    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec(
-        name="camera_driver",
-        parameters=(
-            _ParamSpec(
-                "camera.encoding",
+    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec.table(
+        "camera_driver",
+        # Each distinct set of options once; every parameter names its set by index.
+        (
+            _ParamOptions(
                 "string",
-                default="rgb8",
                 description="Pixel encoding.",
                 choices=("rgb8", "mono8", "bgr8"),
             ),
-            _ParamSpec(
-                "camera.fps",
+            _ParamOptions(
                 "double",
-                default=30.0,
                 description="Frame rate.",
                 unit="Hz",
                 range=(1.0, 120.0, 0.5),
             ),
-            _ParamSpec(
-                "camera.height",
+            _ParamOptions(
                 "int",
-                default=480,
                 description="Image height.",
                 unit="px",
                 range=(48, 4096),
             ),
-            _ParamSpec(
-                "camera.width",
+            _ParamOptions(
                 "int",
-                default=640,
                 description="Image width.",
                 unit="px",
                 range=(64, 4096),
             ),
-            _ParamSpec(
-                "control.pid.kd",
+            _ParamOptions(
                 "double",
-                default=0.01,
                 description="Derivative gain.",
                 validators=(("ge", 0.0),),
             ),
-            _ParamSpec(
-                "control.pid.ki",
+            _ParamOptions(
                 "double",
-                default=0.1,
                 description="Integral gain.",
                 validators=(("ge", 0.0),),
             ),
-            _ParamSpec(
-                "control.pid.kp",
+            _ParamOptions(
                 "double",
-                default=1.0,
                 description="Proportional gain.",
                 validators=(("ge", 0.0),),
             ),
-            _ParamSpec(
-                "robot_name",
+            _ParamOptions(
                 "string",
-                default="my_robot",
                 description="Name of the robot.",
                 read_only=True,
             ),
-            _ParamSpec(
-                "serial",
+            _ParamOptions(
                 "string",
                 required=True,
                 description="Camera serial number; must come from an override.",
                 validators=(("pattern", "^[A-Z0-9]{8}$"),),
             ),
-            _ParamSpec(
-                "topics",
+            _ParamOptions(
                 "string_array",
-                default=("/sensor/data", "/robot/status"),
                 description="Topics to subscribe to.",
                 validators=(("not_empty", None), ("unique", None), ("pattern", "^/")),
             ),
+        ),
+        # (name, default, index of its options)
+        (
+            ("camera.encoding", "rgb8", 0),
+            ("camera.fps", 30.0, 1),
+            ("camera.height", 480, 2),
+            ("camera.width", 640, 3),
+            ("control.pid.kd", 0.01, 4),
+            ("control.pid.ki", 0.1, 5),
+            ("control.pid.kp", 1.0, 6),
+            ("robot_name", "my_robot", 7),
+            ("serial", None, 8),
+            ("topics", ("/sensor/data", "/robot/status"), 9),
         ),
         groups={
             "camera": CameraGroup,

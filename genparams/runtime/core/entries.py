@@ -44,7 +44,7 @@ def instantiate(template: CompiledParam, keys: Sequence[str]) -> CompiledParam:
     """The parameter of one entry: each ``*`` of the template replaced by the next key."""
     name = ".".join(_fill(template.name.split("."), keys))
     path = tuple(_fill(template.attribute_path, keys))
-    return template.replaced(spec=template.spec.replaced(name=name), attribute_path=path)
+    return template.with_path(name, path)
 
 
 def key_slot(compiled: CompiledSchema, map_path: str) -> str:

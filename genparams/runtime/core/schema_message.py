@@ -17,7 +17,8 @@ from typing import Any
 from genparams.runtime.core.errors import GenparamsError
 from genparams.runtime.core.json_codec import JsonError, Limits, loads
 from genparams.runtime.core.naming import ENTRY_KEY, strip_prefix
-from genparams.runtime.core.spec import ParamSpec, RuleSpec, SchemaSpec, compile_param
+from genparams.runtime.core.param_spec import ParamSpec
+from genparams.runtime.core.spec import RuleSpec, SchemaSpec, compile_param
 from genparams.runtime.core.tree import Group
 from genparams.runtime.core.types import TYPES
 from genparams.runtime.core.validators import Custom, Pattern

@@ -14,126 +14,16 @@ from genparams.runtime.core.naming import (
     entry_beside_problem,
     entry_key_problem,
 )
-from genparams.runtime.core.param_checks import (
-    CONFIGURE_ONLY_TEXT,
-    checks_and_texts,
-    description_text,
-)
+from genparams.runtime.core.param_checks import CONFIGURE_ONLY_TEXT
+from genparams.runtime.core.param_kind import ParamKind, kind_of
+from genparams.runtime.core.param_spec import ParamOptions, ParamSpec
 from genparams.runtime.core.records import Record, store
-from genparams.runtime.core.types import TYPES, ParamType
+from genparams.runtime.core.types import ParamType
 from genparams.runtime.core.validators import Bounds, RosRange, Validator
 
 if TYPE_CHECKING:
     from genparams.runtime.core.rules import CompiledRule
     from genparams.runtime.core.tree import Group
-
-
-class ParamSpec(Record):
-    """One parameter as a generated module describes it (a frozen record)."""
-
-    _fields = (
-        "name",
-        "type",
-        "default",
-        "required",
-        "description",
-        "read_only",
-        "unit",
-        "range",
-        "choices",
-        "validators",
-        "additional_constraints",
-        "deprecated",
-        "aliases",
-        "configure_only",
-        "adopt",
-        "optional",
-        "when",
-    )
-    __slots__ = _fields
-    name: str  # dotted ROS name relative to the prefix
-    type: str  # one of the nine schema type names
-    default: Any
-    required: bool
-    description: str
-    read_only: bool
-    unit: str
-    # (min, max) or (min, max, step); a missing step means any value in between
-    range: tuple[Any, Any] | tuple[Any, Any, Any] | None
-    choices: tuple[Any, ...] | None
-    validators: tuple[tuple[str, Any], ...]
-    additional_constraints: str
-    deprecated: str
-    aliases: tuple[str, ...]  # old dotted names, relative to the prefix
-    configure_only: bool  # lifecycle nodes: set only while unconfigured or inactive
-    # declared first by other code of the node: taken over, not refused
-    adopt: bool
-    # declared by type only: None (NOT_SET on the node) until given a value
-    optional: bool
-    # declared only when each named parameter holds one of its values: (("mode", ("advanced",)),)
-    when: tuple[tuple[str, tuple[Any, ...]], ...]
-
-    def __init__(
-        self,
-        name: str,
-        type: str,
-        default: Any = None,
-        required: bool = False,
-        description: str = "",
-        read_only: bool = False,
-        unit: str = "",
-        range: tuple[Any, Any] | tuple[Any, Any, Any] | None = None,
-        choices: tuple[Any, ...] | None = None,
-        validators: tuple[tuple[str, Any], ...] = (),
-        additional_constraints: str = "",
-        deprecated: str = "",
-        aliases: tuple[str, ...] = (),
-        configure_only: bool = False,
-        adopt: bool = False,
-        optional: bool = False,
-        when: tuple[tuple[str, tuple[Any, ...]], ...] = (),
-    ) -> None:
-        store(self, "name", name)
-        store(self, "type", type)
-        store(self, "default", default)
-        store(self, "required", required)
-        store(self, "description", description)
-        store(self, "read_only", read_only)
-        store(self, "unit", unit)
-        store(self, "range", range)
-        store(self, "choices", choices)
-        store(self, "validators", validators)
-        store(self, "additional_constraints", additional_constraints)
-        store(self, "deprecated", deprecated)
-        store(self, "aliases", aliases)
-        store(self, "configure_only", configure_only)
-        store(self, "adopt", adopt)
-        store(self, "optional", optional)
-        store(self, "when", when)
-
-    def replaced(self, **changes: Any) -> ParamSpec:
-        """A copy with ``changes`` (field name -> value), as dataclasses.replace makes."""
-        return ParamSpec(**{**dict(zip(self._fields, self._values(), strict=True)), **changes})
-
-    def declared_with(self, values: Mapping[str, Any]) -> bool:
-        """Whether the condition (``when``) holds for ``values``, by relative name."""
-        return all(values.get(name) in allowed for name, allowed in self.when)
-
-    @property
-    def condition_text(self) -> str:
-        """``when`` in words: "declared only when mode is 'advanced'"."""
-        parts = [
-            f"{name} is {' or '.join(_value_words(value) for value in allowed)}"
-            for name, allowed in self.when
-        ]
-        return "declared only when " + " and ".join(parts) if parts else ""
-
-
-def _value_words(value: Any) -> str:
-    """A condition's value as a params file spells it: true, 2.5, 'advanced'."""
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    return repr(value)
 
 
 class RuleSpec(Record):
@@ -180,6 +70,23 @@ class SchemaSpec(Record):
         store(self, "maps", {} if maps is None else maps)
         store(self, "rules", rules)
 
+    @classmethod
+    def table(
+        cls,
+        name: str,
+        options: tuple[ParamOptions, ...],
+        rows: tuple[tuple[str, Any, int], ...],
+        groups: Mapping[str, type[Group]],
+        maps: Mapping[str, str] | None = None,
+        rules: tuple[RuleSpec, ...] = (),
+    ) -> SchemaSpec:
+        """The spec of a generated module: each parameter a row ``(name, default, index)``
+        of the table, ``index`` naming its entry of ``options`` (shared by every row of
+        the same rules)."""
+        row = ParamSpec.row
+        parameters = tuple([row(name, default, options[index]) for name, default, index in rows])
+        return cls(name, parameters, groups, maps, rules)
+
 
 class EntryKeys(Record):
     """The items of a ``for_each`` parameter name mapped entries: distinct, of ENTRY_KEY_RULE."""
@@ -218,51 +125,68 @@ class CompiledParam(Record):
     Identity also lets a spec hold unhashable validator arguments (``length: {max: 12}``).
     """
 
-    _fields = (
-        "spec",
-        "type",
-        "attribute_path",
-        "checks",
-        "constraints_text",
-        "descriptor_description",
-    )
+    _fields = ("spec", "kind")
     __slots__ = _fields
     spec: ParamSpec
-    type: ParamType
-    attribute_path: tuple[str, ...]
-    checks: tuple[Validator, ...]
-    # The descriptor's texts, made once (and shared between parameters that read the same):
-    # ``additional_constraints`` (``constraints`` less a scalar range, which travels in the
-    # descriptor's own range fields) and the description with its unit.
-    constraints_text: str
-    descriptor_description: str
+    # Shared with every parameter of the same options. Two fields, not six: at 10,000
+    # parameters keeping the type and checks here too cost 0.15 MiB, reading them
+    # through the kind costs about 0.1 us a set (two property reads).
+    kind: ParamKind
 
-    def __init__(
-        self,
-        spec: ParamSpec,
-        type: ParamType,
-        attribute_path: tuple[str, ...],
-        checks: tuple[Validator, ...],
-        constraints_text: str = "",
-        descriptor_description: str = "",
-    ) -> None:
+    def __init__(self, spec: ParamSpec, kind: ParamKind) -> None:
         store(self, "spec", spec)
-        store(self, "type", type)
-        store(self, "attribute_path", attribute_path)
-        store(self, "checks", checks)
-        store(self, "constraints_text", constraints_text)
-        store(self, "descriptor_description", descriptor_description)
+        store(self, "kind", kind)
 
     __eq__ = object.__eq__  # by identity, see above
     __hash__ = object.__hash__
 
-    def replaced(self, **changes: Any) -> CompiledParam:
-        """A copy with ``changes`` (field name -> value), as dataclasses.replace makes."""
-        return CompiledParam(**{**dict(zip(self._fields, self._values(), strict=True)), **changes})
-
     @property
     def name(self) -> str:
         return self.spec.name
+
+    @property
+    def type(self) -> ParamType:
+        return self.kind.type
+
+    @property
+    def checks(self) -> tuple[Validator, ...]:
+        return self.kind.checks
+
+    @property
+    def constraints_text(self) -> str:
+        """The descriptor's ``additional_constraints``: ``constraints`` less a scalar range,
+        which travels in the descriptor's own range fields."""
+        return self.kind.constraints_text
+
+    @property
+    def descriptor_description(self) -> str:
+        """The descriptor's description: the text with its unit."""
+        return self.kind.descriptor_description
+
+    @property
+    def attribute_path(self) -> tuple[str, ...]:
+        """The attributes from the top level to this parameter's value."""
+        path = self.kind.own_path
+        if path is None:
+            name = self.spec.name
+            path = _NAME_PARTS.get(name)
+            if path is None:
+                path = tuple(name.split("."))
+                if len(_NAME_PARTS) < _NAME_PARTS_MAX:
+                    _NAME_PARTS[name] = path
+        return path
+
+    def with_path(self, name: str, path: tuple[str, ...]) -> CompiledParam:
+        """This parameter under another ``name`` (an entry of a template) at ``path``."""
+        kind = self.kind
+        path_of_its_own = own_path(name, path)
+        if path_of_its_own is not None or kind.own_path is not None:
+            kind = kind.with_changes(own_path=path_of_its_own)
+        return compiled_from(self.spec.replaced(name=name), kind)
+
+    def with_checks(self, checks: tuple[Validator, ...]) -> CompiledParam:
+        """This parameter with other checks (those a tool can run where it is)."""
+        return compiled_from(self.spec, self.kind.with_changes(checks, self.kind.own_path))
 
     def from_ros(self, value: Any) -> Any:
         """A ROS value in typed-view form; None (NOT_SET) stays None for an optional parameter."""
@@ -310,16 +234,25 @@ class CompiledParam(Record):
         return tuple(parts)
 
 
+# The attribute paths of names the set path asked for (bounded: a node sets a few
+# parameters often; keeping a path for each of 10,000 parameters cost 0.7 MiB).
+_NAME_PARTS_MAX = 1024
+_NAME_PARTS: dict[str, tuple[str, ...]] = {}
+
+
+def compiled_from(spec: ParamSpec, kind: ParamKind) -> CompiledParam:
+    return CompiledParam(spec, kind)
+
+
+def own_path(name: str, path: tuple[str, ...]) -> tuple[str, ...] | None:
+    """``path`` when it is not the parts of ``name``, else None (made again on each read)."""
+    return None if path == tuple(name.split(".")) else path
+
+
 def compile_param(spec: ParamSpec, extra_checks: tuple[Validator, ...] = ()) -> CompiledParam:
-    checks, constraints_text = checks_and_texts(spec, extra_checks)
-    return CompiledParam(
-        spec=spec,
-        type=TYPES[spec.type],
-        attribute_path=attribute_parts(spec.name),
-        checks=checks,
-        constraints_text=constraints_text,
-        descriptor_description=description_text(spec.description, spec.unit),
-    )
+    kind = kind_of(spec, extra_checks)
+    path = own_path(spec.name, attribute_parts(spec.name))
+    return compiled_from(spec, kind if path is None else kind.with_changes(own_path=path))
 
 
 class CompiledSchema(Record):
@@ -453,7 +386,9 @@ def _compile(spec: SchemaSpec) -> CompiledSchema:
             extra = (EntryKeys(", ".join(m or "the top level" for m in maps), taken),)
         compiled = compile_param(param_spec, extra)
         if in_place:
-            compiled = compiled.replaced(attribute_path=attribute_path(param_spec.name, in_place))
+            path = own_path(param_spec.name, attribute_path(param_spec.name, in_place))
+            if path != compiled.kind.own_path:
+                compiled = compiled_from(param_spec, compiled.kind.with_changes(own_path=path))
         is_template = ENTRY_KEY in param_spec.name.split(".")
         (templates if is_template else parameters)[param_spec.name] = compiled
         aliases.update(dict.fromkeys(param_spec.aliases, param_spec.name))

@@ -8,16 +8,16 @@ from typing import ClassVar
 
 import genparams.runtime as _runtime
 
-# The runtime reads the spec below as API 1 wrote it: refuse any other.
+# The runtime reads the spec below as API 2 wrote it: refuse any other.
 _runtime_api = getattr(_runtime, "RUNTIME_API", None)
-if _runtime_api != 1:
+if _runtime_api != 2:
     raise ImportError(
-        f"{__name__} was generated for genparams runtime API 1, but the "
+        f"{__name__} was generated for genparams runtime API 2, but the "
         f"installed genparams runtime has API {_runtime_api}: regenerate with genparams generate"
     )
 
+from genparams.runtime import ParamOptions as _ParamOptions
 from genparams.runtime import Params as _Params
-from genparams.runtime import ParamSpec as _ParamSpec
 from genparams.runtime import SchemaSpec as _SchemaSpec
 
 __all__ = [
@@ -115,118 +115,74 @@ class AllTypesParams(_Params):
     tiny: float
     "tiny\n\nType: double. Default: 5e-324."
 
-    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec(
-        name="all_types",
-        parameters=(
-            _ParamSpec(
-                "blob",
+    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec.table(
+        "all_types",
+        # Each distinct set of options once; every parameter names its set by index.
+        (
+            _ParamOptions(
                 "byte_array",
-                default=b"\x00\x01\x7f\x80\xff",
             ),
-            _ParamSpec(
-                "count",
+            _ParamOptions(
                 "int",
-                default=-42,
                 description="A signed 64-bit integer.",
             ),
-            _ParamSpec(
-                "counts",
+            _ParamOptions(
                 "int_array",
-                default=(1, -2, 3, 9223372036854775807),
             ),
-            _ParamSpec(
-                "empty_blob",
-                "byte_array",
-                default=b"",
-            ),
-            _ParamSpec(
-                "empty_gains",
+            _ParamOptions(
                 "double_array",
-                default=(),
             ),
-            _ParamSpec(
-                "empty_label",
+            _ParamOptions(
                 "string",
-                default="",
             ),
-            _ParamSpec(
-                "empty_names",
+            _ParamOptions(
                 "string_array",
-                default=(),
             ),
-            _ParamSpec(
-                "flag",
+            _ParamOptions(
                 "bool",
-                default=True,
                 description="A boolean.",
             ),
-            _ParamSpec(
-                "gains",
-                "double_array",
-                default=(0.5, -1.5, 2.0),
-            ),
-            _ParamSpec(
-                "huge",
+            _ParamOptions(
                 "double",
-                default=1.7976931348623157e308,
             ),
-            _ParamSpec(
-                "infinite",
-                "double",
-                default=float("inf"),
-            ),
-            _ParamSpec(
-                "int_max",
+            _ParamOptions(
                 "int",
-                default=9223372036854775807,
             ),
-            _ParamSpec(
-                "int_min",
-                "int",
-                default=-9223372036854775808,
-            ),
-            _ParamSpec(
-                "label",
-                "string",
-                default="hello",
-            ),
-            _ParamSpec(
-                "names",
-                "string_array",
-                default=("a", "b c", ""),
-            ),
-            _ParamSpec(
-                "negative_zero",
+            _ParamOptions(
                 "double",
-                default=-0.0,
-            ),
-            _ParamSpec(
-                "one_item",
-                "int_array",
-                default=(7,),
-            ),
-            _ParamSpec(
-                "ratio",
-                "double",
-                default=0.25,
                 description="A double.",
             ),
-            _ParamSpec(
-                "ratio_from_int",
+            _ParamOptions(
                 "double",
-                default=3.0,
                 description="A double written as an integer.",
             ),
-            _ParamSpec(
-                "switches",
+            _ParamOptions(
                 "bool_array",
-                default=(True, False, True),
             ),
-            _ParamSpec(
-                "tiny",
-                "double",
-                default=5e-324,
-            ),
+        ),
+        # (name, default, index of its options)
+        (
+            ("blob", b"\x00\x01\x7f\x80\xff", 0),
+            ("count", -42, 1),
+            ("counts", (1, -2, 3, 9223372036854775807), 2),
+            ("empty_blob", b"", 0),
+            ("empty_gains", (), 3),
+            ("empty_label", "", 4),
+            ("empty_names", (), 5),
+            ("flag", True, 6),
+            ("gains", (0.5, -1.5, 2.0), 3),
+            ("huge", 1.7976931348623157e308, 7),
+            ("infinite", float("inf"), 7),
+            ("int_max", 9223372036854775807, 8),
+            ("int_min", -9223372036854775808, 8),
+            ("label", "hello", 4),
+            ("names", ("a", "b c", ""), 5),
+            ("negative_zero", -0.0, 7),
+            ("one_item", (7,), 2),
+            ("ratio", 0.25, 9),
+            ("ratio_from_int", 3.0, 10),
+            ("switches", (True, False, True), 11),
+            ("tiny", 5e-324, 7),
         ),
         groups={},
     )

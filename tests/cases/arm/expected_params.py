@@ -9,17 +9,17 @@ from typing import ClassVar
 
 import genparams.runtime as _runtime
 
-# The runtime reads the spec below as API 1 wrote it: refuse any other.
+# The runtime reads the spec below as API 2 wrote it: refuse any other.
 _runtime_api = getattr(_runtime, "RUNTIME_API", None)
-if _runtime_api != 1:
+if _runtime_api != 2:
     raise ImportError(
-        f"{__name__} was generated for genparams runtime API 1, but the "
+        f"{__name__} was generated for genparams runtime API 2, but the "
         f"installed genparams runtime has API {_runtime_api}: regenerate with genparams generate"
     )
 
 from genparams.runtime import Group as _Group
+from genparams.runtime import ParamOptions as _ParamOptions
 from genparams.runtime import Params as _Params
-from genparams.runtime import ParamSpec as _ParamSpec
 from genparams.runtime import SchemaSpec as _SchemaSpec
 
 __all__ = [
@@ -57,41 +57,36 @@ class ArmParams(_Params):
     max_speed: float
     "max_speed\n\nType: double. Unit: rad/s. Default: 1.0. Constraints: within [0.0, 3.0]. Old names: speed_limit."
 
-    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec(
-        name="arm",
-        parameters=(
-            _ParamSpec(
-                "gains.*.i",
+    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec.table(
+        "arm",
+        # Each distinct set of options once; every parameter names its set by index.
+        (
+            _ParamOptions(
                 "double",
-                default=0.0,
                 validators=(("ge", 0.0),),
             ),
-            _ParamSpec(
-                "gains.*.p",
-                "double",
-                default=1.0,
-                validators=(("ge", 0.0),),
-            ),
-            _ParamSpec(
-                "joints",
+            _ParamOptions(
                 "string_array",
-                default=("shoulder", "elbow"),
                 description="Controlled joints; each has an entry in gains.",
             ),
-            _ParamSpec(
-                "legacy_mode",
+            _ParamOptions(
                 "bool",
-                default=False,
                 deprecated="the controller picks the mode itself",
             ),
-            _ParamSpec(
-                "max_speed",
+            _ParamOptions(
                 "double",
-                default=1.0,
                 unit="rad/s",
                 range=(0.0, 3.0),
                 aliases=("speed_limit",),
             ),
+        ),
+        # (name, default, index of its options)
+        (
+            ("gains.*.i", 0.0, 0),
+            ("gains.*.p", 1.0, 0),
+            ("joints", ("shoulder", "elbow"), 1),
+            ("legacy_mode", False, 2),
+            ("max_speed", 1.0, 3),
         ),
         groups={
             "gains.*": GainsGroup,

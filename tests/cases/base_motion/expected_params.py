@@ -8,17 +8,17 @@ from typing import ClassVar
 
 import genparams.runtime as _runtime
 
-# The runtime reads the spec below as API 1 wrote it: refuse any other.
+# The runtime reads the spec below as API 2 wrote it: refuse any other.
 _runtime_api = getattr(_runtime, "RUNTIME_API", None)
-if _runtime_api != 1:
+if _runtime_api != 2:
     raise ImportError(
-        f"{__name__} was generated for genparams runtime API 1, but the "
+        f"{__name__} was generated for genparams runtime API 2, but the "
         f"installed genparams runtime has API {_runtime_api}: regenerate with genparams generate"
     )
 
 from genparams.runtime import Group as _Group
+from genparams.runtime import ParamOptions as _ParamOptions
 from genparams.runtime import Params as _Params
-from genparams.runtime import ParamSpec as _ParamSpec
 from genparams.runtime import RuleSpec as _RuleSpec
 from genparams.runtime import SchemaSpec as _SchemaSpec
 
@@ -63,46 +63,36 @@ class BaseMotionParams(_Params):
     weights: tuple[float, ...]
     "weights\n\nType: double_array. Default: (1.0,)."
 
-    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec(
-        name="base_motion",
-        parameters=(
-            _ParamSpec(
-                "image.aspect_ratio",
+    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec.table(
+        "base_motion",
+        # Each distinct set of options once; every parameter names its set by index.
+        (
+            _ParamOptions(
                 "double",
-                default=1.3333,
             ),
-            _ParamSpec(
-                "image.height",
+            _ParamOptions(
                 "int",
-                default=480,
             ),
-            _ParamSpec(
-                "image.width",
-                "int",
-                default=640,
-            ),
-            _ParamSpec(
-                "max_speed",
+            _ParamOptions(
                 "double",
-                default=1.0,
                 range=(0.0, 5.0),
             ),
-            _ParamSpec(
-                "min_speed",
-                "double",
-                default=0.1,
-                range=(0.0, 5.0),
-            ),
-            _ParamSpec(
-                "topics",
+            _ParamOptions(
                 "string_array",
-                default=("/scan",),
             ),
-            _ParamSpec(
-                "weights",
+            _ParamOptions(
                 "double_array",
-                default=(1.0,),
             ),
+        ),
+        # (name, default, index of its options)
+        (
+            ("image.aspect_ratio", 1.3333, 0),
+            ("image.height", 480, 1),
+            ("image.width", 640, 1),
+            ("max_speed", 1.0, 2),
+            ("min_speed", 0.1, 2),
+            ("topics", ("/scan",), 3),
+            ("weights", (1.0,), 4),
         ),
         groups={
             "image": ImageGroup,

@@ -8,17 +8,17 @@ from typing import ClassVar
 
 import genparams.runtime as _runtime
 
-# The runtime reads the spec below as API 1 wrote it: refuse any other.
+# The runtime reads the spec below as API 2 wrote it: refuse any other.
 _runtime_api = getattr(_runtime, "RUNTIME_API", None)
-if _runtime_api != 1:
+if _runtime_api != 2:
     raise ImportError(
-        f"{__name__} was generated for genparams runtime API 1, but the "
+        f"{__name__} was generated for genparams runtime API 2, but the "
         f"installed genparams runtime has API {_runtime_api}: regenerate with genparams generate"
     )
 
 from genparams.runtime import Group as _Group
+from genparams.runtime import ParamOptions as _ParamOptions
 from genparams.runtime import Params as _Params
-from genparams.runtime import ParamSpec as _ParamSpec
 from genparams.runtime import RuleSpec as _RuleSpec
 from genparams.runtime import SchemaSpec as _SchemaSpec
 
@@ -60,47 +60,46 @@ class ConditionalParams(_Params):
     use_filter: bool
     "use_filter\n\nType: bool. Default: False."
 
-    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec(
-        name="conditional",
-        parameters=(
-            _ParamSpec(
-                "filter.kind",
+    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec.table(
+        "conditional",
+        # Each distinct set of options once; every parameter names its set by index.
+        (
+            _ParamOptions(
                 "string",
                 required=True,
                 description="Required when the filter is used.",
                 when=(("use_filter", (True,)),),
             ),
-            _ParamSpec(
-                "filter.window",
+            _ParamOptions(
                 "int",
-                default=5,
                 validators=(("ge", 1),),
                 when=(("use_filter", (True,)),),
             ),
-            _ParamSpec(
-                "gain",
+            _ParamOptions(
                 "double",
-                default=1.0,
                 range=(0.0, 10.0),
                 when=(("mode", ("advanced", "expert")),),
             ),
-            _ParamSpec(
-                "limit",
+            _ParamOptions(
                 "double",
-                default=2.0,
             ),
-            _ParamSpec(
-                "mode",
+            _ParamOptions(
                 "string",
-                default="basic",
                 read_only=True,
                 choices=("basic", "advanced", "expert"),
             ),
-            _ParamSpec(
-                "use_filter",
+            _ParamOptions(
                 "bool",
-                default=False,
             ),
+        ),
+        # (name, default, index of its options)
+        (
+            ("filter.kind", None, 0),
+            ("filter.window", 5, 1),
+            ("gain", 1.0, 2),
+            ("limit", 2.0, 3),
+            ("mode", "basic", 4),
+            ("use_filter", False, 5),
         ),
         groups={
             "filter": FilterGroup,

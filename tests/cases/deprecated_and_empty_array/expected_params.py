@@ -8,17 +8,17 @@ from typing import ClassVar
 
 import genparams.runtime as _runtime
 
-# The runtime reads the spec below as API 1 wrote it: refuse any other.
+# The runtime reads the spec below as API 2 wrote it: refuse any other.
 _runtime_api = getattr(_runtime, "RUNTIME_API", None)
-if _runtime_api != 1:
+if _runtime_api != 2:
     raise ImportError(
-        f"{__name__} was generated for genparams runtime API 1, but the "
+        f"{__name__} was generated for genparams runtime API 2, but the "
         f"installed genparams runtime has API {_runtime_api}: regenerate with genparams generate"
     )
 
 from genparams.runtime import Group as _Group
+from genparams.runtime import ParamOptions as _ParamOptions
 from genparams.runtime import Params as _Params
-from genparams.runtime import ParamSpec as _ParamSpec
 from genparams.runtime import SchemaSpec as _SchemaSpec
 
 __all__ = [
@@ -50,26 +50,27 @@ class MoverParams(_Params):
     waypoints: tuple[str, ...]
     "waypoints\n\nType: string_array. Default: ('home',)."
 
-    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec(
-        name="mover",
-        parameters=(
-            _ParamSpec(
-                "limits.speed",
+    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec.table(
+        "mover",
+        # Each distinct set of options once; every parameter names its set by index.
+        (
+            _ParamOptions(
                 "double",
-                default=1.0,
                 range=(0.0, 5.0),
             ),
-            _ParamSpec(
-                "max_speed",
+            _ParamOptions(
                 "double",
-                default=1.0,
                 deprecated="use limits.speed",
             ),
-            _ParamSpec(
-                "waypoints",
+            _ParamOptions(
                 "string_array",
-                default=("home",),
             ),
+        ),
+        # (name, default, index of its options)
+        (
+            ("limits.speed", 1.0, 0),
+            ("max_speed", 1.0, 1),
+            ("waypoints", ("home",), 2),
         ),
         groups={
             "limits": LimitsGroup,

@@ -8,17 +8,17 @@ from typing import ClassVar
 
 import genparams.runtime as _runtime
 
-# The runtime reads the spec below as API 1 wrote it: refuse any other.
+# The runtime reads the spec below as API 2 wrote it: refuse any other.
 _runtime_api = getattr(_runtime, "RUNTIME_API", None)
-if _runtime_api != 1:
+if _runtime_api != 2:
     raise ImportError(
-        f"{__name__} was generated for genparams runtime API 1, but the "
+        f"{__name__} was generated for genparams runtime API 2, but the "
         f"installed genparams runtime has API {_runtime_api}: regenerate with genparams generate"
     )
 
 from genparams.runtime import Group as _Group
+from genparams.runtime import ParamOptions as _ParamOptions
 from genparams.runtime import Params as _Params
-from genparams.runtime import ParamSpec as _ParamSpec
 from genparams.runtime import RosValue as _RosValue
 from genparams.runtime import SchemaSpec as _SchemaSpec
 
@@ -63,48 +63,44 @@ class DynamicParams(_Params):
     weights: _RosValue
     "weights\n\nType: any. Default: (1.0, 0.5)."
 
-    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec(
-        name="dynamic",
-        parameters=(
-            _ParamSpec(
-                "extra",
+    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec.table(
+        "dynamic",
+        # Each distinct set of options once; every parameter names its set by index.
+        (
+            _ParamOptions(
                 "any",
                 optional=True,
                 description="Whatever the launch file gives.",
             ),
-            _ParamSpec(
-                "label",
+            _ParamOptions(
                 "any",
-                default="none",
             ),
-            _ParamSpec(
-                "plugin.arg",
+            _ParamOptions(
                 "any",
                 required=True,
                 description="Required; any type.",
             ),
-            _ParamSpec(
-                "plugin.setting",
+            _ParamOptions(
                 "any",
-                default=True,
                 read_only=True,
             ),
-            _ParamSpec(
-                "rate",
+            _ParamOptions(
                 "double",
-                default=10.0,
             ),
-            _ParamSpec(
-                "threshold",
+            _ParamOptions(
                 "any",
-                default=5,
                 description="A count, or a fraction of the maximum when a double.",
             ),
-            _ParamSpec(
-                "weights",
-                "any",
-                default=(1.0, 0.5),
-            ),
+        ),
+        # (name, default, index of its options)
+        (
+            ("extra", None, 0),
+            ("label", "none", 1),
+            ("plugin.arg", None, 2),
+            ("plugin.setting", True, 3),
+            ("rate", 10.0, 4),
+            ("threshold", 5, 5),
+            ("weights", (1.0, 0.5), 1),
         ),
         groups={
             "plugin": PluginGroup,

@@ -10,17 +10,17 @@ from typing import ClassVar
 
 import genparams.runtime as _runtime
 
-# The runtime reads the spec below as API 1 wrote it: refuse any other.
+# The runtime reads the spec below as API 2 wrote it: refuse any other.
 _runtime_api = getattr(_runtime, "RUNTIME_API", None)
-if _runtime_api != 1:
+if _runtime_api != 2:
     raise ImportError(
-        f"{__name__} was generated for genparams runtime API 1, but the "
+        f"{__name__} was generated for genparams runtime API 2, but the "
         f"installed genparams runtime has API {_runtime_api}: regenerate with genparams generate"
     )
 
 from genparams.runtime import Group as _Group
+from genparams.runtime import ParamOptions as _ParamOptions
 from genparams.runtime import Params as _Params
-from genparams.runtime import ParamSpec as _ParamSpec
 from genparams.runtime import SchemaSpec as _SchemaSpec
 
 __all__ = [
@@ -189,70 +189,51 @@ class FeaturesParams(_Params):
     def __len__(self) -> int:
         return len(self._map)
 
-    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec(
-        name="features",
-        parameters=(
-            _ParamSpec(
-                "*.scale",
+    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec.table(
+        "features",
+        # Each distinct set of options once; every parameter names its set by index.
+        (
+            _ParamOptions(
                 "double",
-                default=1.0,
             ),
-            _ParamSpec(
-                "constraints.*.goal",
+            _ParamOptions(
                 "double",
-                default=0.1,
                 validators=(("ge", 0.0),),
             ),
-            _ParamSpec(
-                "constraints.goal_time",
-                "double",
-                default=0.5,
-            ),
-            _ParamSpec(
-                "defaults.strictness",
+            _ParamOptions(
                 "int",
-                default=1,
             ),
-            _ParamSpec(
-                "int",
-                "int",
-                default=3,
-            ),
-            _ParamSpec(
-                "interfaces",
+            _ParamOptions(
                 "string_array",
-                default=("wheel_left/position", "wheel_right/position"),
             ),
-            _ParamSpec(
-                "joints",
-                "string_array",
-                default=("shoulder", "elbow"),
-            ),
-            _ParamSpec(
-                "max_velocity",
+            _ParamOptions(
                 "double",
-                default=float("nan"),
                 validators=(
                     ("custom", {"function": "tests.gpl.checks:at_least_or_nan", "args": (0.5,)}),
                 ),
             ),
-            _ParamSpec(
-                "overruns.print_warnings",
+            _ParamOptions(
                 "bool",
-                default=True,
                 description="Warn on overruns.",
                 adopt=True,
             ),
-            _ParamSpec(
-                "snapshot",
+            _ParamOptions(
                 "bool",
-                default=False,
             ),
-            _ParamSpec(
-                "weights.*.*.w",
-                "double",
-                default=1.0,
-            ),
+        ),
+        # (name, default, index of its options)
+        (
+            ("*.scale", 1.0, 0),
+            ("constraints.*.goal", 0.1, 1),
+            ("constraints.goal_time", 0.5, 0),
+            ("defaults.strictness", 1, 2),
+            ("int", 3, 2),
+            ("interfaces", ("wheel_left/position", "wheel_right/position"), 3),
+            ("joints", ("shoulder", "elbow"), 3),
+            ("max_velocity", float("nan"), 4),
+            ("overruns.print_warnings", True, 5),
+            ("snapshot", False, 6),
+            ("weights.*.*.w", 1.0, 0),
         ),
         groups={
             "*": EntryGroup,

@@ -8,17 +8,17 @@ from typing import ClassVar
 
 import genparams.runtime as _runtime
 
-# The runtime reads the spec below as API 1 wrote it: refuse any other.
+# The runtime reads the spec below as API 2 wrote it: refuse any other.
 _runtime_api = getattr(_runtime, "RUNTIME_API", None)
-if _runtime_api != 1:
+if _runtime_api != 2:
     raise ImportError(
-        f"{__name__} was generated for genparams runtime API 1, but the "
+        f"{__name__} was generated for genparams runtime API 2, but the "
         f"installed genparams runtime has API {_runtime_api}: regenerate with genparams generate"
     )
 
 from genparams.runtime import Group as _Group
+from genparams.runtime import ParamOptions as _ParamOptions
 from genparams.runtime import Params as _Params
-from genparams.runtime import ParamSpec as _ParamSpec
 from genparams.runtime import SchemaSpec as _SchemaSpec
 
 __all__ = [
@@ -118,94 +118,45 @@ class KeywordsParams(_Params):
     type: str
     "type\n\nType: string. Default: 'soft keyword'."
 
-    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec(
-        name="keywords",
-        parameters=(
-            _ParamSpec(
-                "Camera",
+    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec.table(
+        "keywords",
+        # Each distinct set of options once; every parameter names its set by index.
+        (
+            _ParamOptions(
                 "string",
-                default="capitalised",
             ),
-            _ParamSpec(
-                "None",
-                "string",
-                default="none",
-            ),
-            _ParamSpec(
-                "True",
+            _ParamOptions(
                 "bool",
-                default=True,
             ),
-            _ParamSpec(
-                "async.await",
+            _ParamOptions(
                 "int",
-                default=3,
             ),
-            _ParamSpec(
-                "async.global.nonlocal",
-                "bool",
-                default=True,
-            ),
-            _ParamSpec(
-                "async.yield",
-                "string",
-                default="y",
-            ),
-            _ParamSpec(
-                "camera",
-                "string",
-                default="lower case",
-            ),
-            _ParamSpec(
-                "case",
-                "string",
-                default="soft keyword",
-            ),
-            _ParamSpec(
-                "class",
-                "string",
-                default="car",
-            ),
-            _ParamSpec(
-                "cls",
-                "int",
-                default=2,
-            ),
-            _ParamSpec(
-                "from",
-                "int",
-                default=1,
-            ),
-            _ParamSpec(
-                "if",
+            _ParamOptions(
                 "int_array",
-                default=(1,),
             ),
-            _ParamSpec(
-                "import",
-                "bool",
-                default=False,
-            ),
-            _ParamSpec(
-                "lambda",
+            _ParamOptions(
                 "double",
-                default=0.5,
             ),
-            _ParamSpec(
-                "match",
-                "string",
-                default="soft keyword",
-            ),
-            _ParamSpec(
-                "self",
-                "int",
-                default=1,
-            ),
-            _ParamSpec(
-                "type",
-                "string",
-                default="soft keyword",
-            ),
+        ),
+        # (name, default, index of its options)
+        (
+            ("Camera", "capitalised", 0),
+            ("None", "none", 0),
+            ("True", True, 1),
+            ("async.await", 3, 2),
+            ("async.global.nonlocal", True, 1),
+            ("async.yield", "y", 0),
+            ("camera", "lower case", 0),
+            ("case", "soft keyword", 0),
+            ("class", "car", 0),
+            ("cls", 2, 2),
+            ("from", 1, 2),
+            ("if", (1,), 3),
+            ("import", False, 1),
+            ("lambda", 0.5, 4),
+            ("match", "soft keyword", 0),
+            ("self", 1, 2),
+            ("type", "soft keyword", 0),
         ),
         groups={
             "async.global": AsyncGlobalGroup,

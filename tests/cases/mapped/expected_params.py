@@ -9,17 +9,17 @@ from typing import ClassVar
 
 import genparams.runtime as _runtime
 
-# The runtime reads the spec below as API 1 wrote it: refuse any other.
+# The runtime reads the spec below as API 2 wrote it: refuse any other.
 _runtime_api = getattr(_runtime, "RUNTIME_API", None)
-if _runtime_api != 1:
+if _runtime_api != 2:
     raise ImportError(
-        f"{__name__} was generated for genparams runtime API 1, but the "
+        f"{__name__} was generated for genparams runtime API 2, but the "
         f"installed genparams runtime has API {_runtime_api}: regenerate with genparams generate"
     )
 
 from genparams.runtime import Group as _Group
+from genparams.runtime import ParamOptions as _ParamOptions
 from genparams.runtime import Params as _Params
-from genparams.runtime import ParamSpec as _ParamSpec
 from genparams.runtime import SchemaSpec as _SchemaSpec
 
 __all__ = [
@@ -128,81 +128,74 @@ class MappedArmParams(_Params):
     tools: tuple[str, ...]
     "No default items.\n\nType: string_array. Default: (). Constraints: each item names an entry of tool: any text but '.', '*', spaces and control characters; no repeats."
 
-    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec(
-        name="mapped_arm",
-        parameters=(
-            _ParamSpec(
-                "camera.fps",
+    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec.table(
+        "mapped_arm",
+        # Each distinct set of options once; every parameter names its set by index.
+        (
+            _ParamOptions(
                 "double",
-                default=30.0,
                 aliases=("camera.rate", "frame_rate"),
             ),
-            _ParamSpec(
-                "fingers",
+            _ParamOptions(
                 "string_array",
-                default=("thumb", "index"),
             ),
-            _ParamSpec(
-                "gains.*.i",
+            _ParamOptions(
                 "double",
-                default=0.0,
                 description="Integral gain.",
             ),
-            _ParamSpec(
-                "gains.*.limits.effort",
+            _ParamOptions(
                 "double",
-                default=2.0,
                 range=(0.0, 5.0),
             ),
-            _ParamSpec(
-                "gains.*.p",
+            _ParamOptions(
                 "double",
-                default=1.0,
                 validators=(("ge", 0.0),),
             ),
-            _ParamSpec(
-                "gains.*.tips.*.force",
+            _ParamOptions(
                 "double",
-                default=0.5,
                 unit="N",
             ),
-            _ParamSpec(
-                "joints",
+            _ParamOptions(
                 "string_array",
-                default=("shoulder", "elbow"),
                 description="One gains entry per joint.",
             ),
-            _ParamSpec(
-                "legacy_mode",
+            _ParamOptions(
                 "bool",
-                default=False,
                 deprecated="the controller picks the mode",
             ),
-            _ParamSpec(
-                "max_speed",
+            _ParamOptions(
                 "double",
-                default=1.0,
                 unit="rad/s",
                 range=(0.0, 3.0),
                 aliases=("speed_limit", "limits.speed"),
             ),
-            _ParamSpec(
-                "robot_id",
+            _ParamOptions(
                 "string",
                 required=True,
                 description="Required; not in a mapped group.",
             ),
-            _ParamSpec(
-                "tool.*.weight",
+            _ParamOptions(
                 "double",
-                default=0.1,
             ),
-            _ParamSpec(
-                "tools",
+            _ParamOptions(
                 "string_array",
-                default=(),
                 description="No default items.",
             ),
+        ),
+        # (name, default, index of its options)
+        (
+            ("camera.fps", 30.0, 0),
+            ("fingers", ("thumb", "index"), 1),
+            ("gains.*.i", 0.0, 2),
+            ("gains.*.limits.effort", 2.0, 3),
+            ("gains.*.p", 1.0, 4),
+            ("gains.*.tips.*.force", 0.5, 5),
+            ("joints", ("shoulder", "elbow"), 6),
+            ("legacy_mode", False, 7),
+            ("max_speed", 1.0, 8),
+            ("robot_id", None, 9),
+            ("tool.*.weight", 0.1, 10),
+            ("tools", (), 11),
         ),
         groups={
             "camera": CameraGroup,

@@ -4,21 +4,21 @@
 
 from __future__ import annotations
 
-from typing import ClassVar
+from typing import TYPE_CHECKING, ClassVar
 
 import genparams.runtime as _runtime
 
-# The runtime reads the spec below as API 1 wrote it: refuse any other.
+# The runtime reads the spec below as API 2 wrote it: refuse any other.
 _runtime_api = getattr(_runtime, "RUNTIME_API", None)
-if _runtime_api != 1:
+if _runtime_api != 2:
     raise ImportError(
-        f"{__name__} was generated for genparams runtime API 1, but the "
+        f"{__name__} was generated for genparams runtime API 2, but the "
         f"installed genparams runtime has API {_runtime_api}: regenerate with genparams generate"
     )
 
 from genparams.runtime import Group as _Group
+from genparams.runtime import ParamOptions as _ParamOptions
 from genparams.runtime import Params as _Params
-from genparams.runtime import ParamSpec as _ParamSpec
 from genparams.runtime import SchemaSpec as _SchemaSpec
 
 __all__ = [
@@ -109,13 +109,18 @@ class ABGroup(_Group):
     "Class name ABGroup.\n\nType: int. Default: 1."
 
 
-class ABGroup2(_Group):
-    "Parameters under a.b."
+# At run time the same class as ABGroup: groups of one shape share one.
+if TYPE_CHECKING:
 
-    __slots__ = ("value",)
+    class ABGroup2(_Group):
+        "Parameters under a.b."
 
-    value: int
-    "Class name ABGroup too; gets a number.\n\nType: int. Default: 2."
+        __slots__ = ("value",)
+
+        value: int
+        "Class name ABGroup too; gets a number.\n\nType: int. Default: 2."
+else:
+    ABGroup2 = ABGroup
 
 
 class AGroup(_Group):
@@ -136,13 +141,18 @@ class SensorsLidarGroup(_Group):
     "sensors.lidar.frame\n\nType: string. Default: 'lidar_link'."
 
 
-class SensorsCameraGroup(_Group):
-    "Parameters under sensors.camera."
+# At run time the same class as SensorsLidarGroup: groups of one shape share one.
+if TYPE_CHECKING:
 
-    __slots__ = ("frame",)
+    class SensorsCameraGroup(_Group):
+        "Parameters under sensors.camera."
 
-    frame: str
-    "sensors.camera.frame\n\nType: string. Default: 'camera_link'."
+        __slots__ = ("frame",)
+
+        frame: str
+        "sensors.camera.frame\n\nType: string. Default: 'camera_link'."
+else:
+    SensorsCameraGroup = SensorsLidarGroup
 
 
 class SensorsGroup(_Group):
@@ -177,71 +187,45 @@ class NestedNamespacesParams(_Params):
     sensors: SensorsGroup
     "Namespace sensors."
 
-    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec(
-        name="nested_namespaces",
-        parameters=(
-            _ParamSpec(
-                "a.b.value",
+    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec.table(
+        "nested_namespaces",
+        # Each distinct set of options once; every parameter names its set by index.
+        (
+            _ParamOptions(
                 "int",
-                default=2,
                 description="Class name ABGroup too; gets a number.",
             ),
-            _ParamSpec(
-                "a_b.value",
+            _ParamOptions(
                 "int",
-                default=1,
                 description="Class name ABGroup.",
             ),
-            _ParamSpec(
-                "rate",
+            _ParamOptions(
                 "double",
-                default=10.0,
             ),
-            _ParamSpec(
-                "robot.arm.joint.limits.lower",
+            _ParamOptions(
                 "double_array",
-                default=(-1.0, -2.0),
             ),
-            _ParamSpec(
-                "robot.arm.joint.limits.rate",
-                "double",
-                default=50.0,
-            ),
-            _ParamSpec(
-                "robot.arm.joint.limits.upper",
-                "double_array",
-                default=(1.0, 2.0),
-            ),
-            _ParamSpec(
-                "robot.arm.joint.rate",
-                "double",
-                default=40.0,
-            ),
-            _ParamSpec(
-                "robot.arm.rate",
-                "double",
-                default=30.0,
-            ),
-            _ParamSpec(
-                "robot.base.rate",
+            _ParamOptions(
                 "int",
-                default=5,
             ),
-            _ParamSpec(
-                "robot.rate",
-                "double",
-                default=20.0,
-            ),
-            _ParamSpec(
-                "sensors.camera.frame",
+            _ParamOptions(
                 "string",
-                default="camera_link",
             ),
-            _ParamSpec(
-                "sensors.lidar.frame",
-                "string",
-                default="lidar_link",
-            ),
+        ),
+        # (name, default, index of its options)
+        (
+            ("a.b.value", 2, 0),
+            ("a_b.value", 1, 1),
+            ("rate", 10.0, 2),
+            ("robot.arm.joint.limits.lower", (-1.0, -2.0), 3),
+            ("robot.arm.joint.limits.rate", 50.0, 2),
+            ("robot.arm.joint.limits.upper", (1.0, 2.0), 3),
+            ("robot.arm.joint.rate", 40.0, 2),
+            ("robot.arm.rate", 30.0, 2),
+            ("robot.base.rate", 5, 4),
+            ("robot.rate", 20.0, 2),
+            ("sensors.camera.frame", "camera_link", 5),
+            ("sensors.lidar.frame", "lidar_link", 5),
         ),
         groups={
             "robot.arm.joint.limits": RobotArmJointLimitsGroup,

@@ -9,17 +9,17 @@ from typing import ClassVar
 
 import genparams.runtime as _runtime
 
-# The runtime reads the spec below as API 1 wrote it: refuse any other.
+# The runtime reads the spec below as API 2 wrote it: refuse any other.
 _runtime_api = getattr(_runtime, "RUNTIME_API", None)
-if _runtime_api != 1:
+if _runtime_api != 2:
     raise ImportError(
-        f"{__name__} was generated for genparams runtime API 1, but the "
+        f"{__name__} was generated for genparams runtime API 2, but the "
         f"installed genparams runtime has API {_runtime_api}: regenerate with genparams generate"
     )
 
 from genparams.runtime import Group as _Group
+from genparams.runtime import ParamOptions as _ParamOptions
 from genparams.runtime import Params as _Params
-from genparams.runtime import ParamSpec as _ParamSpec
 from genparams.runtime import SchemaSpec as _SchemaSpec
 
 __all__ = [
@@ -80,43 +80,42 @@ class OpenGroupsParams(_Params):
     sensors: _Mapping[str, SensorsGroup]
     "Mapped group sensors: one entry per key given under sensors in the overrides."
 
-    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec(
-        name="open_groups",
-        parameters=(
-            _ParamSpec(
-                "controllers.*.gains.*.p",
+    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec.table(
+        "open_groups",
+        # Each distinct set of options once; every parameter names its set by index.
+        (
+            _ParamOptions(
                 "double",
-                default=1.0,
             ),
-            _ParamSpec(
-                "joints",
+            _ParamOptions(
                 "string_array",
-                default=("left", "right"),
             ),
-            _ParamSpec(
-                "rate",
+            _ParamOptions(
                 "double",
-                default=10.0,
                 unit="Hz",
             ),
-            _ParamSpec(
-                "sensors.*.enabled",
+            _ParamOptions(
                 "bool",
-                default=True,
             ),
-            _ParamSpec(
-                "sensors.*.rate",
+            _ParamOptions(
                 "double",
-                default=30.0,
                 unit="Hz",
                 range=(1.0, 200.0),
             ),
-            _ParamSpec(
-                "sensors.*.topic",
+            _ParamOptions(
                 "string",
                 required=True,
                 description="Topic the sensor publishes on.",
             ),
+        ),
+        # (name, default, index of its options)
+        (
+            ("controllers.*.gains.*.p", 1.0, 0),
+            ("joints", ("left", "right"), 1),
+            ("rate", 10.0, 2),
+            ("sensors.*.enabled", True, 3),
+            ("sensors.*.rate", 30.0, 4),
+            ("sensors.*.topic", None, 5),
         ),
         groups={
             "sensors.*": SensorsGroup,

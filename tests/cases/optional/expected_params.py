@@ -8,17 +8,17 @@ from typing import ClassVar
 
 import genparams.runtime as _runtime
 
-# The runtime reads the spec below as API 1 wrote it: refuse any other.
+# The runtime reads the spec below as API 2 wrote it: refuse any other.
 _runtime_api = getattr(_runtime, "RUNTIME_API", None)
-if _runtime_api != 1:
+if _runtime_api != 2:
     raise ImportError(
-        f"{__name__} was generated for genparams runtime API 1, but the "
+        f"{__name__} was generated for genparams runtime API 2, but the "
         f"installed genparams runtime has API {_runtime_api}: regenerate with genparams generate"
     )
 
 from genparams.runtime import Group as _Group
+from genparams.runtime import ParamOptions as _ParamOptions
 from genparams.runtime import Params as _Params
-from genparams.runtime import ParamSpec as _ParamSpec
 from genparams.runtime import RuleSpec as _RuleSpec
 from genparams.runtime import SchemaSpec as _SchemaSpec
 
@@ -69,61 +69,63 @@ class OptionalParams(_Params):
     verbose: bool | None
     "verbose\n\nType: bool. Not set by default. Read-only."
 
-    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec(
-        name="optional",
-        parameters=(
-            _ParamSpec(
-                "frame_id",
+    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec.table(
+        "optional",
+        # Each distinct set of options once; every parameter names its set by index.
+        (
+            _ParamOptions(
                 "string",
                 optional=True,
                 description="Frame of the output; the input's frame when not set.",
             ),
-            _ParamSpec(
-                "limits.max_speed",
+            _ParamOptions(
                 "double",
-                default=2.0,
             ),
-            _ParamSpec(
-                "limits.speed",
+            _ParamOptions(
                 "double",
                 optional=True,
             ),
-            _ParamSpec(
-                "mask",
+            _ParamOptions(
                 "byte_array",
                 optional=True,
             ),
-            _ParamSpec(
-                "mode",
+            _ParamOptions(
                 "string",
-                default="normal",
                 choices=("normal", "fast"),
             ),
-            _ParamSpec(
-                "retries",
+            _ParamOptions(
                 "int",
                 optional=True,
                 validators=(("ge", 0),),
             ),
-            _ParamSpec(
-                "timeout",
+            _ParamOptions(
                 "double",
                 optional=True,
                 unit="s",
                 range=(0.0, 60.0),
             ),
-            _ParamSpec(
-                "topics",
+            _ParamOptions(
                 "string_array",
                 optional=True,
                 validators=(("unique", None),),
             ),
-            _ParamSpec(
-                "verbose",
+            _ParamOptions(
                 "bool",
                 optional=True,
                 read_only=True,
             ),
+        ),
+        # (name, default, index of its options)
+        (
+            ("frame_id", None, 0),
+            ("limits.max_speed", 2.0, 1),
+            ("limits.speed", None, 2),
+            ("mask", None, 3),
+            ("mode", "normal", 4),
+            ("retries", None, 5),
+            ("timeout", None, 6),
+            ("topics", None, 7),
+            ("verbose", None, 8),
         ),
         groups={
             "limits": LimitsGroup,

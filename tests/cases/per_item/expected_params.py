@@ -10,17 +10,17 @@ from typing import ClassVar
 
 import genparams.runtime as _runtime
 
-# The runtime reads the spec below as API 1 wrote it: refuse any other.
+# The runtime reads the spec below as API 2 wrote it: refuse any other.
 _runtime_api = getattr(_runtime, "RUNTIME_API", None)
-if _runtime_api != 1:
+if _runtime_api != 2:
     raise ImportError(
-        f"{__name__} was generated for genparams runtime API 1, but the "
+        f"{__name__} was generated for genparams runtime API 2, but the "
         f"installed genparams runtime has API {_runtime_api}: regenerate with genparams generate"
     )
 
 from genparams.runtime import Group as _Group
+from genparams.runtime import ParamOptions as _ParamOptions
 from genparams.runtime import Params as _Params
-from genparams.runtime import ParamSpec as _ParamSpec
 from genparams.runtime import SchemaSpec as _SchemaSpec
 
 __all__ = [
@@ -79,44 +79,39 @@ class PerItemParams(_Params):
     def __len__(self) -> int:
         return len(self._map)
 
-    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec(
-        name="per_item",
-        parameters=(
-            _ParamSpec(
-                "*",
+    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec.table(
+        "per_item",
+        # Each distinct set of options once; every parameter names its set by index.
+        (
+            _ParamOptions(
                 "string",
-                default="",
                 description="Topic of each sensor.",
             ),
-            _ParamSpec(
-                "joints",
+            _ParamOptions(
                 "string_array",
-                default=("shoulder", "elbow"),
             ),
-            _ParamSpec(
-                "limits.*",
+            _ParamOptions(
                 "double_array",
-                default=(-1.0, 1.0),
                 validators=(("length", 2),),
             ),
-            _ParamSpec(
-                "limits.scale",
+            _ParamOptions(
                 "double",
-                default=1.0,
             ),
-            _ParamSpec(
-                "offsets.*",
+            _ParamOptions(
                 "double",
-                default=0.0,
                 description="Zero offset of each joint.",
                 unit="rad",
                 range=(-3.14, 3.14),
             ),
-            _ParamSpec(
-                "sensors",
-                "string_array",
-                default=("imu",),
-            ),
+        ),
+        # (name, default, index of its options)
+        (
+            ("*", "", 0),
+            ("joints", ("shoulder", "elbow"), 1),
+            ("limits.*", (-1.0, 1.0), 2),
+            ("limits.scale", 1.0, 3),
+            ("offsets.*", 0.0, 4),
+            ("sensors", ("imu",), 1),
         ),
         groups={
             "limits": LimitsGroup,

@@ -8,17 +8,17 @@ from typing import ClassVar
 
 import genparams.runtime as _runtime
 
-# The runtime reads the spec below as API 1 wrote it: refuse any other.
+# The runtime reads the spec below as API 2 wrote it: refuse any other.
 _runtime_api = getattr(_runtime, "RUNTIME_API", None)
-if _runtime_api != 1:
+if _runtime_api != 2:
     raise ImportError(
-        f"{__name__} was generated for genparams runtime API 1, but the "
+        f"{__name__} was generated for genparams runtime API 2, but the "
         f"installed genparams runtime has API {_runtime_api}: regenerate with genparams generate"
     )
 
 from genparams.runtime import Group as _Group
+from genparams.runtime import ParamOptions as _ParamOptions
 from genparams.runtime import Params as _Params
-from genparams.runtime import ParamSpec as _ParamSpec
 from genparams.runtime import SchemaSpec as _SchemaSpec
 
 __all__ = [
@@ -71,65 +71,68 @@ class RequiredParams(_Params):
     serial: str
     "Serial number.\n\nType: string. Required. Constraints: matches '^[A-Z0-9]{8}$'."
 
-    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec(
-        name="required",
-        parameters=(
-            _ParamSpec(
-                "enabled",
+    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec.table(
+        "required",
+        # Each distinct set of options once; every parameter names its set by index.
+        (
+            _ParamOptions(
                 "bool",
                 required=True,
             ),
-            _ParamSpec(
-                "gain",
+            _ParamOptions(
                 "double",
                 required=True,
                 validators=(("gt", 0.0),),
             ),
-            _ParamSpec(
-                "hosts",
+            _ParamOptions(
                 "string_array",
                 required=True,
                 validators=(("not_empty", None),),
             ),
-            _ParamSpec(
-                "key",
+            _ParamOptions(
                 "byte_array",
                 required=True,
             ),
-            _ParamSpec(
-                "limits.ids",
+            _ParamOptions(
                 "int_array",
                 required=True,
             ),
-            _ParamSpec(
-                "limits.masks",
+            _ParamOptions(
                 "bool_array",
                 required=True,
             ),
-            _ParamSpec(
-                "limits.speed",
+            _ParamOptions(
                 "double_array",
                 required=True,
                 validators=(("length", 2),),
             ),
-            _ParamSpec(
-                "optional",
+            _ParamOptions(
                 "string",
-                default="fallback",
             ),
-            _ParamSpec(
-                "port",
+            _ParamOptions(
                 "int",
                 required=True,
                 range=(1, 65535),
             ),
-            _ParamSpec(
-                "serial",
+            _ParamOptions(
                 "string",
                 required=True,
                 description="Serial number.",
                 validators=(("pattern", "^[A-Z0-9]{8}$"),),
             ),
+        ),
+        # (name, default, index of its options)
+        (
+            ("enabled", None, 0),
+            ("gain", None, 1),
+            ("hosts", None, 2),
+            ("key", None, 3),
+            ("limits.ids", None, 4),
+            ("limits.masks", None, 5),
+            ("limits.speed", None, 6),
+            ("optional", "fallback", 7),
+            ("port", None, 8),
+            ("serial", None, 9),
         ),
         groups={
             "limits": LimitsGroup,

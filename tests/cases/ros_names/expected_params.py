@@ -9,17 +9,17 @@ from typing import ClassVar
 
 import genparams.runtime as _runtime
 
-# The runtime reads the spec below as API 1 wrote it: refuse any other.
+# The runtime reads the spec below as API 2 wrote it: refuse any other.
 _runtime_api = getattr(_runtime, "RUNTIME_API", None)
-if _runtime_api != 1:
+if _runtime_api != 2:
     raise ImportError(
-        f"{__name__} was generated for genparams runtime API 1, but the "
+        f"{__name__} was generated for genparams runtime API 2, but the "
         f"installed genparams runtime has API {_runtime_api}: regenerate with genparams generate"
     )
 
 from genparams.runtime import Group as _Group
+from genparams.runtime import ParamOptions as _ParamOptions
 from genparams.runtime import Params as _Params
-from genparams.runtime import ParamSpec as _ParamSpec
 from genparams.runtime import SchemaSpec as _SchemaSpec
 
 __all__ = [
@@ -170,94 +170,58 @@ class RosNamesParams(_Params):
     wheels: _Mapping[str, WheelsGroup]
     "Mapped group wheels: one entry per item of wheel-names."
 
-    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec(
-        name="ros_names",
-        parameters=(
-            _ParamSpec(
-                "buttons.*.button-id",
+    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec.table(
+        "ros_names",
+        # Each distinct set of options once; every parameter names its set by index.
+        (
+            _ParamOptions(
                 "int",
-                default=0,
             ),
-            _ParamSpec(
-                "buttons.*.type",
+            _ParamOptions(
                 "string",
-                default="press",
             ),
-            _ParamSpec(
-                "from-",
+            _ParamOptions(
                 "bool",
-                default=False,
                 description="A keyword with a dash: its own attribute.",
             ),
-            _ParamSpec(
-                "gain-per-axis.*",
+            _ParamOptions(
                 "double",
-                default=1.0,
             ),
-            _ParamSpec(
-                "input_shape/height",
+            _ParamOptions(
                 "int",
-                default=480,
                 range=(1, 4096),
             ),
-            _ParamSpec(
-                "max-speed",
+            _ParamOptions(
                 "double",
-                default=1.0,
                 unit="m/s",
             ),
-            _ParamSpec(
-                "type.type.mode",
+            _ParamOptions(
                 "string",
-                default="fast",
-            ),
-            _ParamSpec(
-                "walk_button.axis_mappings.twist-angular-z.axis",
-                "int",
-                default=0,
-            ),
-            _ParamSpec(
-                "walk_button.axis_mappings.twist-angular-z.scale",
-                "double",
-                default=1.5,
-            ),
-            _ParamSpec(
-                "walk_button.axis_mappings.twist-linear-x.axis",
-                "int",
-                default=1,
-            ),
-            _ParamSpec(
-                "walk_button.axis_mappings.twist-linear-x.offset",
-                "double",
-                default=0.0,
-            ),
-            _ParamSpec(
-                "walk_button.axis_mappings.twist-linear-x.scale",
-                "double",
-                default=0.5,
-            ),
-            _ParamSpec(
-                "walk_button.topic_name",
-                "string",
-                default="cmd_vel",
-            ),
-            _ParamSpec(
-                "walk_button.type",
-                "string",
-                default="topic",
                 description="A parameter named type, in a namespace.",
                 choices=("topic", "action"),
             ),
-            _ParamSpec(
-                "wheel-names",
+            _ParamOptions(
                 "string_array",
-                default=("left-front", "right-front"),
             ),
-            _ParamSpec(
-                "wheels.*.max-rpm",
-                "int",
-                default=100,
-            ),
+        ),
+        # (name, default, index of its options)
+        (
+            ("buttons.*.button-id", 0, 0),
+            ("buttons.*.type", "press", 1),
+            ("from-", False, 2),
+            ("gain-per-axis.*", 1.0, 3),
+            ("input_shape/height", 480, 4),
+            ("max-speed", 1.0, 5),
+            ("type.type.mode", "fast", 1),
+            ("walk_button.axis_mappings.twist-angular-z.axis", 0, 0),
+            ("walk_button.axis_mappings.twist-angular-z.scale", 1.5, 3),
+            ("walk_button.axis_mappings.twist-linear-x.axis", 1, 0),
+            ("walk_button.axis_mappings.twist-linear-x.offset", 0.0, 3),
+            ("walk_button.axis_mappings.twist-linear-x.scale", 0.5, 3),
+            ("walk_button.topic_name", "cmd_vel", 1),
+            ("walk_button.type", "topic", 6),
+            ("wheel-names", ("left-front", "right-front"), 7),
+            ("wheels.*.max-rpm", 100, 0),
         ),
         groups={
             "walk_button.axis_mappings.twist-linear-x": WalkButtonAxisMappingsTwistLinearXGroup,

@@ -8,17 +8,17 @@ from typing import ClassVar
 
 import genparams.runtime as _runtime
 
-# The runtime reads the spec below as API 1 wrote it: refuse any other.
+# The runtime reads the spec below as API 2 wrote it: refuse any other.
 _runtime_api = getattr(_runtime, "RUNTIME_API", None)
-if _runtime_api != 1:
+if _runtime_api != 2:
     raise ImportError(
-        f"{__name__} was generated for genparams runtime API 1, but the "
+        f"{__name__} was generated for genparams runtime API 2, but the "
         f"installed genparams runtime has API {_runtime_api}: regenerate with genparams generate"
     )
 
 from genparams.runtime import Group as _Group
+from genparams.runtime import ParamOptions as _ParamOptions
 from genparams.runtime import Params as _Params
-from genparams.runtime import ParamSpec as _ParamSpec
 from genparams.runtime import RuleSpec as _RuleSpec
 from genparams.runtime import SchemaSpec as _SchemaSpec
 
@@ -69,58 +69,50 @@ class RulesNodeParams(_Params):
     weights: tuple[float, ...]
     "weights\n\nType: double_array. Default: (1.0,)."
 
-    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec(
-        name="rules_node",
-        parameters=(
-            _ParamSpec(
-                "image.aspect_ratio",
+    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec.table(
+        "rules_node",
+        # Each distinct set of options once; every parameter names its set by index.
+        (
+            _ParamOptions(
                 "double",
-                default=1.3333,
             ),
-            _ParamSpec(
-                "image.height",
+            _ParamOptions(
                 "int",
-                default=480,
                 validators=(("gt", 0),),
             ),
-            _ParamSpec(
-                "image.width",
+            _ParamOptions(
                 "int",
-                default=640,
             ),
-            _ParamSpec(
-                "label",
+            _ParamOptions(
                 "string",
-                default="a|b",
             ),
-            _ParamSpec(
-                "max_speed",
+            _ParamOptions(
                 "double",
-                default=1.0,
                 range=(0.0, 5.0),
             ),
-            _ParamSpec(
-                "min_speed",
-                "double",
-                default=0.1,
-                range=(0.0, 5.0),
-            ),
-            _ParamSpec(
-                "serial",
+            _ParamOptions(
                 "string",
                 required=True,
                 description="Required: the defaults file leaves it out.",
             ),
-            _ParamSpec(
-                "topics",
+            _ParamOptions(
                 "string_array",
-                default=("/scan",),
             ),
-            _ParamSpec(
-                "weights",
+            _ParamOptions(
                 "double_array",
-                default=(1.0,),
             ),
+        ),
+        # (name, default, index of its options)
+        (
+            ("image.aspect_ratio", 1.3333, 0),
+            ("image.height", 480, 1),
+            ("image.width", 640, 2),
+            ("label", "a|b", 3),
+            ("max_speed", 1.0, 4),
+            ("min_speed", 0.1, 4),
+            ("serial", None, 5),
+            ("topics", ("/scan",), 6),
+            ("weights", (1.0,), 7),
         ),
         groups={
             "image": ImageGroup,

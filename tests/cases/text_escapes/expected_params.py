@@ -8,16 +8,16 @@ from typing import ClassVar
 
 import genparams.runtime as _runtime
 
-# The runtime reads the spec below as API 1 wrote it: refuse any other.
+# The runtime reads the spec below as API 2 wrote it: refuse any other.
 _runtime_api = getattr(_runtime, "RUNTIME_API", None)
-if _runtime_api != 1:
+if _runtime_api != 2:
     raise ImportError(
-        f"{__name__} was generated for genparams runtime API 1, but the "
+        f"{__name__} was generated for genparams runtime API 2, but the "
         f"installed genparams runtime has API {_runtime_api}: regenerate with genparams generate"
     )
 
+from genparams.runtime import ParamOptions as _ParamOptions
 from genparams.runtime import Params as _Params
-from genparams.runtime import ParamSpec as _ParamSpec
 from genparams.runtime import SchemaSpec as _SchemaSpec
 
 __all__ = [
@@ -83,90 +83,85 @@ class TextEscapesParams(_Params):
     unicode: str
     "Ünïcödé: 温度 🌡️, combining é, zero width\u200bspace.\n\nType: string. Unit: °C. Default: 'héllo wörld ✓ 日本語 🤖 עברית'."
 
-    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec(
-        name="text_escapes",
-        parameters=(
-            _ParamSpec(
-                "array_of_quotes",
+    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec.table(
+        "text_escapes",
+        # Each distinct set of options once; every parameter names its set by index.
+        (
+            _ParamOptions(
                 "string_array",
-                default=("'", '"', "\\", '"""', "{{", "}}", "%}"),
             ),
-            _ParamSpec(
-                "backslashes",
+            _ParamOptions(
                 "string",
-                default="C:\\path\\to\\file \\n not a newline",
                 description="Backslash at the end \\",
             ),
-            _ParamSpec(
-                "both_quotes",
+            _ParamOptions(
                 "string",
-                default="\"'\"\"\"'''",
                 description="Both kinds: \" and ' and \"\"\" and '''.",
             ),
-            _ParamSpec(
-                "choices_with_quotes",
+            _ParamOptions(
                 "string",
-                default="a'b",
                 choices=("a'b", 'c"d', "e\\f"),
             ),
-            _ParamSpec(
-                "comment_marker",
+            _ParamOptions(
                 "string",
-                default="# not a comment",
                 description="# also not a comment",
             ),
-            _ParamSpec(
-                "control_chars",
+            _ParamOptions(
                 "string",
-                default="tab\there\rcarriage\x1bescape\x7fdel",
                 description="Bell \x07 and form feed \x0c.",
             ),
-            _ParamSpec(
-                "double_quote",
+            _ParamOptions(
                 "string",
-                default='He said "hello"',
                 description='A description with "double quotes".',
             ),
-            _ParamSpec(
-                "injection",
+            _ParamOptions(
                 "string",
-                default='"); import os; os.system("touch PWNED") #',
                 description='"""); import os; os.system(\'touch PWNED\') #',
                 additional_constraints="'''; raise SystemExit #",
                 deprecated='"); exit(1); ("',
             ),
-            _ParamSpec(
-                "line_separators",
+            _ParamOptions(
                 "string",
-                default="a\u2028b\u2029c\x85d",
                 description="Line\u2028separator and paragraph\u2029separator.",
             ),
-            _ParamSpec(
-                "long_text",
+            _ParamOptions(
                 "string",
-                default="xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx",
                 description="A long description. A long description. A long description. A long description. A long description. A long description.",
             ),
-            _ParamSpec(
-                "single_quote",
+            _ParamOptions(
                 "string",
-                default="it's",
                 description="A description with 'single quotes'.",
             ),
-            _ParamSpec(
-                "template_syntax",
+            _ParamOptions(
                 "string",
-                default="{{ 7 * 7 }} {% raw %} {# comment #}",
                 description="{{ schema.name }} {% for x in y %}{% endfor %}",
                 unit="{{ unit }}",
             ),
-            _ParamSpec(
-                "unicode",
+            _ParamOptions(
                 "string",
-                default="héllo wörld ✓ 日本語 🤖 עברית",
                 description="Ünïcödé: 温度 🌡️, combining é, zero width\u200bspace.",
                 unit="°C",
             ),
+        ),
+        # (name, default, index of its options)
+        (
+            ("array_of_quotes", ("'", '"', "\\", '"""', "{{", "}}", "%}"), 0),
+            ("backslashes", "C:\\path\\to\\file \\n not a newline", 1),
+            ("both_quotes", "\"'\"\"\"'''", 2),
+            ("choices_with_quotes", "a'b", 3),
+            ("comment_marker", "# not a comment", 4),
+            ("control_chars", "tab\there\rcarriage\x1bescape\x7fdel", 5),
+            ("double_quote", 'He said "hello"', 6),
+            ("injection", '"); import os; os.system("touch PWNED") #', 7),
+            ("line_separators", "a\u2028b\u2029c\x85d", 8),
+            (
+                "long_text",
+                "xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx",
+                9,
+            ),
+            ("single_quote", "it's", 10),
+            ("template_syntax", "{{ 7 * 7 }} {% raw %} {# comment #}", 11),
+            ("unicode", "héllo wörld ✓ 日本語 🤖 עברית", 12),
         ),
         groups={},
     )

@@ -8,17 +8,17 @@ from typing import ClassVar
 
 import genparams.runtime as _runtime
 
-# The runtime reads the spec below as API 1 wrote it: refuse any other.
+# The runtime reads the spec below as API 2 wrote it: refuse any other.
 _runtime_api = getattr(_runtime, "RUNTIME_API", None)
-if _runtime_api != 1:
+if _runtime_api != 2:
     raise ImportError(
-        f"{__name__} was generated for genparams runtime API 1, but the "
+        f"{__name__} was generated for genparams runtime API 2, but the "
         f"installed genparams runtime has API {_runtime_api}: regenerate with genparams generate"
     )
 
 from genparams.runtime import Group as _Group
+from genparams.runtime import ParamOptions as _ParamOptions
 from genparams.runtime import Params as _Params
-from genparams.runtime import ParamSpec as _ParamSpec
 from genparams.runtime import SchemaSpec as _SchemaSpec
 
 __all__ = [
@@ -150,166 +150,146 @@ class TrickyNodeParams(_Params):
     yes: str
     "A string default that looks like a bool.\n\nType: string. Default: 'yes'."
 
-    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec(
-        name="tricky_node",
-        parameters=(
-            _ParamSpec(
-                "arrays.counts",
+    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec.table(
+        "tricky_node",
+        # Each distinct set of options once; every parameter names its set by index.
+        (
+            _ParamOptions(
                 "int_array",
-                default=(1, 2, 3),
                 range=(0, 10),
                 validators=(("unique", None), ("length", {"min": 1, "max": 5})),
             ),
-            _ParamSpec(
-                "arrays.flags",
+            _ParamOptions(
                 "bool_array",
-                default=(True, False),
                 description="Booleans.",
             ),
-            _ParamSpec(
-                "arrays.gains",
+            _ParamOptions(
                 "double_array",
-                default=(0.5, 1.0, 2.0),
                 validators=(("element_bounds", (0.0, 10.0)),),
             ),
-            _ParamSpec(
-                "arrays.none_yet",
+            _ParamOptions(
                 "string_array",
-                default=(),
                 description="An empty list: ROS reads [] as not set.",
             ),
-            _ParamSpec(
-                "arrays.raw",
+            _ParamOptions(
                 "byte_array",
-                default=b"\x00\x7f\xff",
                 description="Bytes.",
             ),
-            _ParamSpec(
-                "arrays.words",
+            _ParamOptions(
                 "string_array",
-                default=("true", "1.5", "plain", "with space"),
                 validators=(("subset_of", ("true", "1.5", "plain", "with space", "other")),),
             ),
-            _ParamSpec(
-                "empty_text",
+            _ParamOptions(
                 "string",
-                default="",
                 description="An empty string.",
             ),
-            _ParamSpec(
-                "from",
+            _ParamOptions(
                 "int",
-                default=3,
                 description="A Python keyword as a name.",
             ),
-            _ParamSpec(
-                "hexish",
+            _ParamOptions(
                 "string",
-                default="0x10",
                 description="What ROS would read as 16.",
             ),
-            _ParamSpec(
-                "infinite",
+            _ParamOptions(
                 "string",
-                default="inf",
                 description="What ROS would read as a double.",
             ),
-            _ParamSpec(
-                "label",
+            _ParamOptions(
                 "string",
-                default="30",
                 description="Looks like a number | has a pipe\nand a second line",
                 additional_constraints="Free text: *not* markup::",
             ),
-            _ParamSpec(
-                "legacy.old_gain",
+            _ParamOptions(
                 "double",
-                default=1.5,
                 read_only=True,
                 validators=(("gt", 0), ("le", 100)),
                 deprecated="Use `numbers.tiny` | *instead*.",
             ),
-            _ParamSpec(
-                "legacy.token",
+            _ParamOptions(
                 "string",
                 required=True,
                 description="Required, with a pattern full of markup characters.",
                 validators=(("pattern", "^[a-z_]+$"), ("length", {"max": 16}), ("not_empty", None)),
             ),
-            _ParamSpec(
-                "multiline",
+            _ParamOptions(
                 "string",
-                default="line one\nline two\u2028sep",
                 description="Newlines\u2028and separators",
             ),
-            _ParamSpec(
-                "numbers.big_int",
+            _ParamOptions(
                 "int",
-                default=9223372036854775807,
                 description="The largest int64.",
             ),
-            _ParamSpec(
-                "numbers.huge",
+            _ParamOptions(
                 "double",
-                default=1e16,
                 description="A large double.",
             ),
-            _ParamSpec(
-                "numbers.negative_zero",
+            _ParamOptions(
                 "double",
-                default=-0.0,
                 description="Negative zero.",
             ),
-            _ParamSpec(
-                "numbers.stepped",
+            _ParamOptions(
                 "int",
-                default=10,
                 description="Unit with a pipe.",
                 unit="m|s",
                 range=(0, 100, 5),
             ),
-            _ParamSpec(
-                "numbers.subnormal",
+            _ParamOptions(
                 "double",
-                default=5e-324,
                 description="ROS reads it back as a string.",
             ),
-            _ParamSpec(
-                "numbers.tiny",
+            _ParamOptions(
                 "double",
-                default=1e-05,
                 description="A small double.",
             ),
-            _ParamSpec(
-                "numbers.whole",
+            _ParamOptions(
                 "double",
-                default=2.0,
                 description="A double written as an integer in the schema.",
             ),
-            _ParamSpec(
-                "on",
+            _ParamOptions(
                 "bool",
-                default=False,
                 description="A key YAML 1.1 would read as a bool.",
             ),
-            _ParamSpec(
-                "quote",
+            _ParamOptions(
                 "string",
-                default='say "hi" \\ back',
                 description='Quotes "and" \\ backslashes',
             ),
-            _ParamSpec(
-                "spaced",
+            _ParamOptions(
                 "string",
-                default=" padded ",
                 description="Leading and trailing spaces.",
             ),
-            _ParamSpec(
-                "yes",
+            _ParamOptions(
                 "string",
-                default="yes",
                 description="A string default that looks like a bool.",
             ),
+        ),
+        # (name, default, index of its options)
+        (
+            ("arrays.counts", (1, 2, 3), 0),
+            ("arrays.flags", (True, False), 1),
+            ("arrays.gains", (0.5, 1.0, 2.0), 2),
+            ("arrays.none_yet", (), 3),
+            ("arrays.raw", b"\x00\x7f\xff", 4),
+            ("arrays.words", ("true", "1.5", "plain", "with space"), 5),
+            ("empty_text", "", 6),
+            ("from", 3, 7),
+            ("hexish", "0x10", 8),
+            ("infinite", "inf", 9),
+            ("label", "30", 10),
+            ("legacy.old_gain", 1.5, 11),
+            ("legacy.token", None, 12),
+            ("multiline", "line one\nline two\u2028sep", 13),
+            ("numbers.big_int", 9223372036854775807, 14),
+            ("numbers.huge", 1e16, 15),
+            ("numbers.negative_zero", -0.0, 16),
+            ("numbers.stepped", 10, 17),
+            ("numbers.subnormal", 5e-324, 18),
+            ("numbers.tiny", 1e-05, 19),
+            ("numbers.whole", 2.0, 20),
+            ("on", False, 21),
+            ("quote", 'say "hi" \\ back', 22),
+            ("spaced", " padded ", 23),
+            ("yes", "yes", 24),
         ),
         groups={
             "numbers": NumbersGroup,

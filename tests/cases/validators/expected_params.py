@@ -8,17 +8,17 @@ from typing import ClassVar
 
 import genparams.runtime as _runtime
 
-# The runtime reads the spec below as API 1 wrote it: refuse any other.
+# The runtime reads the spec below as API 2 wrote it: refuse any other.
 _runtime_api = getattr(_runtime, "RUNTIME_API", None)
-if _runtime_api != 1:
+if _runtime_api != 2:
     raise ImportError(
-        f"{__name__} was generated for genparams runtime API 1, but the "
+        f"{__name__} was generated for genparams runtime API 2, but the "
         f"installed genparams runtime has API {_runtime_api}: regenerate with genparams generate"
     )
 
 from genparams.runtime import Group as _Group
+from genparams.runtime import ParamOptions as _ParamOptions
 from genparams.runtime import Params as _Params
-from genparams.runtime import ParamSpec as _ParamSpec
 from genparams.runtime import SchemaSpec as _SchemaSpec
 
 __all__ = [
@@ -197,97 +197,68 @@ class ValidatorsParams(_Params):
     sizes: SizesGroup
     "Namespace sizes."
 
-    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec(
-        name="validators",
-        parameters=(
-            _ParamSpec(
-                "choices.features",
+    _SPEC: ClassVar[_SchemaSpec] = _SchemaSpec.table(
+        "validators",
+        # Each distinct set of options once; every parameter names its set by index.
+        (
+            _ParamOptions(
                 "string_array",
-                default=("x",),
                 choices=("x", "y", "z"),
             ),
-            _ParamSpec(
-                "choices.gain",
+            _ParamOptions(
                 "double",
-                default=0.5,
                 validators=(("one_of", (0.5, 1.0, 2.0)),),
             ),
-            _ParamSpec(
-                "choices.ids",
+            _ParamOptions(
                 "int_array",
-                default=(1, 3),
                 validators=(("subset_of", (1, 2, 3)),),
             ),
-            _ParamSpec(
-                "choices.level",
+            _ParamOptions(
                 "int",
-                default=2,
                 choices=(1, 2, 3),
             ),
-            _ParamSpec(
-                "choices.mode",
+            _ParamOptions(
                 "string",
-                default="auto",
                 choices=("auto", "manual", "off"),
             ),
-            _ParamSpec(
-                "choices.scales",
+            _ParamOptions(
                 "double_array",
-                default=(0.5,),
                 validators=(("subset_of", (0.5, 1.0)),),
             ),
-            _ParamSpec(
-                "choices.tags",
+            _ParamOptions(
                 "string_array",
-                default=("red",),
                 validators=(("subset_of", ("red", "green", "blue")),),
             ),
-            _ParamSpec(
-                "compare.at_most",
+            _ParamOptions(
                 "int",
-                default=10,
                 validators=(("le", 10),),
             ),
-            _ParamSpec(
-                "compare.below",
+            _ParamOptions(
                 "double",
-                default=-0.5,
                 validators=(("lt", 0),),
             ),
-            _ParamSpec(
-                "compare.bounded",
+            _ParamOptions(
                 "int",
-                default=3,
                 validators=(("bounds", (1, 5)),),
             ),
-            _ParamSpec(
-                "compare.non_negative",
+            _ParamOptions(
                 "int",
-                default=0,
                 validators=(("ge", 0),),
             ),
-            _ParamSpec(
-                "compare.positive",
+            _ParamOptions(
                 "double",
-                default=0.1,
                 validators=(("gt", 0.0),),
             ),
-            _ParamSpec(
-                "compare.window",
+            _ParamOptions(
                 "double",
-                default=2.5,
                 validators=(("gt", 1.0), ("lt", 5.0)),
             ),
-            _ParamSpec(
-                "custom.even",
+            _ParamOptions(
                 "int",
-                default=4,
                 validators=(("custom", "tests.custom_checks:is_even"),),
             ),
-            _ParamSpec(
-                "described.tolerance",
+            _ParamOptions(
                 "double",
-                default=0.01,
                 description="A parameter with every optional key.",
                 read_only=True,
                 unit="m",
@@ -295,109 +266,110 @@ class ValidatorsParams(_Params):
                 additional_constraints="Keep it below the sensor noise.",
                 deprecated="Use ranges.fps instead.",
             ),
-            _ParamSpec(
-                "lists.counts",
+            _ParamOptions(
                 "int_array",
-                default=(1, 2),
                 validators=(("element_bounds", (0, 100)), ("unique", None)),
             ),
-            _ParamSpec(
-                "lists.gains",
+            _ParamOptions(
                 "double_array",
-                default=(0.1, 0.2),
                 validators=(("unique", None), ("element_bounds", (0.0, 1.0))),
             ),
-            _ParamSpec(
-                "lists.octets",
+            _ParamOptions(
                 "byte_array",
-                default=b"\x01\x02",
                 validators=(("unique", None),),
             ),
-            _ParamSpec(
-                "lists.serial",
+            _ParamOptions(
                 "string",
-                default="ABCD1234",
                 validators=(("pattern", "^[A-Z0-9]{8}$"),),
             ),
-            _ParamSpec(
-                "lists.topics",
+            _ParamOptions(
                 "string_array",
-                default=("/a", "/b"),
                 validators=(("not_empty", None), ("unique", None), ("pattern", "^/")),
             ),
-            _ParamSpec(
-                "ranges.even",
+            _ParamOptions(
                 "int_array",
-                default=(0, 2, 4),
                 range=(0, 10, 2),
             ),
-            _ParamSpec(
-                "ranges.fps",
+            _ParamOptions(
                 "double",
-                default=30.0,
                 unit="Hz",
                 range=(1.0, 120.0, 0.5),
             ),
-            _ParamSpec(
-                "ranges.full_int64",
+            _ParamOptions(
                 "int",
-                default=0,
                 range=(-9223372036854775808, 9223372036854775807),
             ),
-            _ParamSpec(
-                "ranges.offsets",
+            _ParamOptions(
                 "int_array",
-                default=(-1, 0, 1),
                 range=(-10, 10),
             ),
-            _ParamSpec(
-                "ranges.weights",
+            _ParamOptions(
                 "double_array",
-                default=(0.0, 0.5, 1.0),
                 range=(0.0, 1.0),
             ),
-            _ParamSpec(
-                "ranges.width",
+            _ParamOptions(
                 "int",
-                default=640,
                 range=(64, 4096, 64),
             ),
-            _ParamSpec(
-                "sizes.at_least",
+            _ParamOptions(
                 "string_array",
-                default=("a",),
                 validators=(("length", {"min": 1}),),
             ),
-            _ParamSpec(
-                "sizes.at_most",
+            _ParamOptions(
                 "byte_array",
-                default=b"\x01\x02",
                 validators=(("length", {"max": 4}),),
             ),
-            _ParamSpec(
-                "sizes.code",
+            _ParamOptions(
                 "string",
-                default="AB12",
                 validators=(("length", 4),),
             ),
-            _ParamSpec(
-                "sizes.exact",
+            _ParamOptions(
                 "int_array",
-                default=(1, 2, 3),
                 validators=(("length", {"exact": 3}),),
             ),
-            _ParamSpec(
-                "sizes.flags",
+            _ParamOptions(
                 "bool_array",
-                default=(True,),
                 validators=(("not_empty", None), ("length", {"max": 2})),
             ),
-            _ParamSpec(
-                "sizes.name",
+            _ParamOptions(
                 "string",
-                default="abc",
                 validators=(("not_empty", None), ("length", {"min": 1, "max": 8})),
             ),
+        ),
+        # (name, default, index of its options)
+        (
+            ("choices.features", ("x",), 0),
+            ("choices.gain", 0.5, 1),
+            ("choices.ids", (1, 3), 2),
+            ("choices.level", 2, 3),
+            ("choices.mode", "auto", 4),
+            ("choices.scales", (0.5,), 5),
+            ("choices.tags", ("red",), 6),
+            ("compare.at_most", 10, 7),
+            ("compare.below", -0.5, 8),
+            ("compare.bounded", 3, 9),
+            ("compare.non_negative", 0, 10),
+            ("compare.positive", 0.1, 11),
+            ("compare.window", 2.5, 12),
+            ("custom.even", 4, 13),
+            ("described.tolerance", 0.01, 14),
+            ("lists.counts", (1, 2), 15),
+            ("lists.gains", (0.1, 0.2), 16),
+            ("lists.octets", b"\x01\x02", 17),
+            ("lists.serial", "ABCD1234", 18),
+            ("lists.topics", ("/a", "/b"), 19),
+            ("ranges.even", (0, 2, 4), 20),
+            ("ranges.fps", 30.0, 21),
+            ("ranges.full_int64", 0, 22),
+            ("ranges.offsets", (-1, 0, 1), 23),
+            ("ranges.weights", (0.0, 0.5, 1.0), 24),
+            ("ranges.width", 640, 25),
+            ("sizes.at_least", ("a",), 26),
+            ("sizes.at_most", b"\x01\x02", 27),
+            ("sizes.code", "AB12", 28),
+            ("sizes.exact", (1, 2, 3), 29),
+            ("sizes.flags", (True,), 30),
+            ("sizes.name", "abc", 31),
         ),
         groups={
             "ranges": RangesGroup,
