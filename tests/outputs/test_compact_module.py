@@ -12,6 +12,8 @@ import sys
 import types
 from pathlib import Path
 
+import pytest
+
 import genparams
 from genparams.runtime import ParamOptions, ParamSpec
 from genparams.runtime.core.spec import compile_schema
@@ -71,6 +73,18 @@ def test_groups_of_one_shape_share_a_class_and_keep_their_values(tmp_path: Path)
     assert cfg.to_dict()["right"] == {"lambda_": 4}
     assert cfg.to_dict()["left"] == {"lambda": 3}
     assert pickle.loads(pickle.dumps(cfg.rear)) == cfg.rear
+
+
+def test_a_shared_class_names_no_one_group(tmp_path: Path) -> None:
+    """rear's value must not print, nor refuse a write, as front's class."""
+    module = _module(tmp_path)
+    cfg = module.ShapesParams.defaults()
+    assert repr(cfg.rear).startswith("Group(") and "x=2" in repr(cfg.rear)
+    assert repr(cfg.front).startswith("Group(")
+    assert repr(cfg.wide).startswith("WideGroup(")  # a shape of its own keeps its name
+    with pytest.raises(AttributeError, match=r"^Group\b") as refused:
+        cfg.rear.x = 5
+    assert "FrontGroup" not in str(refused.value)
 
 
 def test_type_checkers_see_one_class_per_group(tmp_path: Path) -> None:

@@ -85,6 +85,11 @@ class SchemaSpec(Record):
         the same rules)."""
         row = ParamSpec.row
         parameters = tuple([row(name, default, options[index]) for name, default, index in rows])
+        seen: set[type[Group]] = set()
+        for group in groups.values():
+            if group in seen:
+                group._SHARED = True  # several groups of one shape: no one group's name
+            seen.add(group)
         return cls(name, parameters, groups, maps, rules)
 
 

@@ -30,6 +30,9 @@ class Group:
 
     __slots__ = ()
     _DETACHED: ClassVar[tuple[str, ...]] = ()  # non-field slots, None in copies
+    # True when groups of one shape share this class at run time (see SchemaSpec.table):
+    # its own name would then misname the others, so it shows as "Group".
+    _SHARED: ClassVar[bool] = False
 
     def __copy__(self) -> Group:
         return self if self._is_frozen() else _rebuild(type(self), self._field_values())
@@ -47,10 +50,10 @@ class Group:
         return tuple(getattr(self, f) for f in field_names(type(self)))
 
     def __setattr__(self, name: str, value: Any) -> None:
-        raise AttributeError(_READ_ONLY.format(cls=type(self).__name__, name=name))
+        raise AttributeError(_READ_ONLY.format(cls=_shown_name(type(self)), name=name))
 
     def __delattr__(self, name: str) -> None:
-        raise AttributeError(_READ_ONLY.format(cls=type(self).__name__, name=name))
+        raise AttributeError(_READ_ONLY.format(cls=_shown_name(type(self)), name=name))
 
     def __eq__(self, other: object) -> bool:
         if other is self:
@@ -63,7 +66,11 @@ class Group:
 
     def __repr__(self) -> str:
         fields = ", ".join(f"{f}={getattr(self, f)!r}" for f in field_names(type(self)))
-        return f"{type(self).__name__}({fields})"
+        return f"{_shown_name(type(self))}({fields})"
+
+
+def _shown_name(cls: type[Group]) -> str:
+    return "Group" if cls._SHARED else cls.__name__
 
 
 G = TypeVar("G", bound=Group)
