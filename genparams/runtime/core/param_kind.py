@@ -59,24 +59,26 @@ class ParamKind:
         )
 
 
-# Bounded: a process that reads schemas from other nodes (tune, audit) compiles many.
-# Keyed by the options object (kept in the value, so its id is not reused while cached):
-# options that hold unhashable validator arguments (``length: {max: 12}``) share too.
-_KINDS_MAX = 4096
-_KINDS: dict[int, tuple[ParamOptions, ParamKind]] = {}
+# The kinds made while compiling one schema, keyed by the options object (kept in the
+# value, so its id is not reused while the table lives): options that hold unhashable
+# validator arguments (``length: {max: 12}``) share too.
+KindTable = dict[int, tuple[ParamOptions, ParamKind]]
 
 
-def kind_of(spec: ParamSpec, extra_checks: tuple[Validator, ...] = ()) -> ParamKind:
-    """The kind of ``spec``: shared with every parameter of the same options object."""
+def kind_of(
+    spec: ParamSpec, extra_checks: tuple[Validator, ...] = (), table: KindTable | None = None
+) -> ParamKind:
+    """The kind of ``spec``: shared, through ``table``, with every parameter of the same
+    options object compiled with it."""
     options = spec.options
-    if not extra_checks:
-        cached = _KINDS.get(id(options))
+    if table is not None and not extra_checks:
+        cached = table.get(id(options))
         if cached is not None and cached[0] is options:
             return cached[1]
     checks, constraints_text = checks_and_texts(spec, extra_checks)
     kind = ParamKind(
         TYPES[spec.type], checks, constraints_text, description_text(spec.description, spec.unit)
     )
-    if not extra_checks and len(_KINDS) < _KINDS_MAX:
-        _KINDS[id(options)] = (options, kind)
+    if table is not None and not extra_checks:
+        table[id(options)] = (options, kind)
     return kind

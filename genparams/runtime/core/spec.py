@@ -15,7 +15,7 @@ from genparams.runtime.core.naming import (
     entry_key_problem,
 )
 from genparams.runtime.core.param_checks import CONFIGURE_ONLY_TEXT
-from genparams.runtime.core.param_kind import ParamKind, kind_of
+from genparams.runtime.core.param_kind import KindTable, ParamKind, kind_of
 from genparams.runtime.core.param_spec import ParamOptions, ParamSpec
 from genparams.runtime.core.records import Record, store
 from genparams.runtime.core.types import ParamType
@@ -254,8 +254,10 @@ def own_path(name: str, path: tuple[str, ...]) -> tuple[str, ...] | None:
     return None if path == tuple(name.split(".")) else path
 
 
-def compile_param(spec: ParamSpec, extra_checks: tuple[Validator, ...] = ()) -> CompiledParam:
-    kind = kind_of(spec, extra_checks)
+def compile_param(
+    spec: ParamSpec, extra_checks: tuple[Validator, ...] = (), kinds: KindTable | None = None
+) -> CompiledParam:
+    kind = kind_of(spec, extra_checks, kinds)
     path = own_path(spec.name, attribute_parts(spec.name))
     return compiled_from(spec, kind if path is None else kind.with_changes(own_path=path))
 
@@ -383,13 +385,14 @@ def _compile(spec: SchemaSpec) -> CompiledSchema:
     parameters: dict[str, CompiledParam] = {}
     templates: dict[str, CompiledParam] = {}
     aliases: dict[str, str] = {}
+    kinds: KindTable = {}  # parameters of one options object share one kind
     for param_spec in spec.parameters:
         maps = keyed.get(param_spec.name)
         extra: tuple[Validator, ...] = ()
         if maps:
             taken = tuple((m, _names_beside(spec, m)) for m in maps if m in in_place)
             extra = (EntryKeys(", ".join(m or "the top level" for m in maps), taken),)
-        compiled = compile_param(param_spec, extra)
+        compiled = compile_param(param_spec, extra, kinds)
         if in_place:
             path = own_path(param_spec.name, attribute_path(param_spec.name, in_place))
             if path != compiled.kind.own_path:
