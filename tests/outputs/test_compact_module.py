@@ -158,12 +158,14 @@ def test_compiled_parameters_share_a_kind_and_keep_only_paths_of_their_own(
 def test_a_table_of_one_parameter_is_laid_out_as_ruff_lays_it_out(tmp_path: Path) -> None:
     # A one-item tuple's comma is no magic trailing comma: ruff joins it when it fits.
     long_default = f'["{"a" * 60}", "{"b" * 60}"]'
+    # Two groups of one shape whose names make the alias line longer than a line.
+    twins = "".join(f"  {c * 50}:\n    x: {{type: int, default: 1}}\n" for c in "pq")
     for name, kind, default in (
         ("only", "string", '"x"'),
         ("long_" * 9, "string_array", long_default),
     ):
         entry = f"{{type: {kind}, default: {default}}}"
-        schema = f"genparams: 1\nname: one\nparameters:\n  {name}: {entry}\n"
+        schema = f"genparams: 1\nname: one\nparameters:\n  {name}: {entry}\n{twins}"
         module = tmp_path / "one_params.py"
         module.write_text(genparams.generate("one.yaml", schema), encoding="utf-8")
         result = subprocess.run(
