@@ -6,7 +6,8 @@ writes one JSON object to ``--out FILE``.
 --params-file`` in ``sys.argv``). Modules this environment lacks (message packages,
 drivers, ``carla``) are stand-ins; spinning stops the run at once, and so does a timer, so
 a node is read as its constructor left it. Every node built is kept; the one read is the
-class asked for, else the first built by a class of the file, else the first built.
+class asked for, else the first built by a class of the file, else the first built; a file
+that builds none when run has its first node class built, without arguments.
 
 ``generated MODULE CLASS NODE``: a fresh node named ``NODE`` declares the generated class
 ``CLASS`` of ``MODULE`` (with the params file, as the original was started).
@@ -201,6 +202,10 @@ def _run_original(root: Path, file: Path, params: str | None, class_name: str | 
             namespace["main"]()
     except BaseException as exc:  # the node's own code: whatever it raises ends the run
         stopped = "spin" if isinstance(exc, Stopped) and str(exc) == "spin" else _what(exc)
+    if class_name is None and not built:  # a module that builds no node: its node class
+        class_name = next((name for name, value in namespace.items()
+                           if isinstance(value, type) and issubclass(value, Node)
+                           and value.__module__ == "__main__"), None)  # fmt: skip
     if class_name and not any(type(n).__name__ == class_name for n in built):
         try:
             if not rclpy.utilities.ok():
