@@ -2,12 +2,13 @@
 writes one JSON object to ``--out FILE``.
 
 ``original ROOT FILE``: the public node's own code runs, as ``ros2 run`` would start it
-(``FILE`` as ``__main__``, its repository's packages importable, ``--ros-args
---params-file`` in ``sys.argv``). Modules this environment lacks (message packages,
-drivers, ``carla``) are stand-ins; spinning stops the run at once, and so does a timer, so
-a node is read as its constructor left it. Every node built is kept; the one read is the
-class asked for, else the first built by a class of the file, else the first built; a file
-that builds none when run has its first node class built, without arguments.
+(``FILE`` as ``__main__``, a module of its package where it is in one, its repository's
+packages importable, ``--ros-args --params-file`` in ``sys.argv``). Modules this
+environment lacks (message packages, drivers, ``carla``) are stand-ins; spinning stops
+the run at once, and so does a timer, so a node is read as its constructor left it.
+Every node built is kept; the one read is the class asked for, else the first built by a
+class of the file, else the first built; a file that builds none when run has its first
+node class built, without arguments.
 
 ``generated MODULE CLASS NODE``: a fresh node named ``NODE`` declares the generated class
 ``CLASS`` of ``MODULE`` (with the params file, as the original was started).
@@ -186,7 +187,8 @@ def _run_original(root: Path, file: Path, params: str | None, class_name: str | 
     rclpy.init = _init_as_newer_rclpy(rclpy.init)
     stand_ins = _StandIns(_imported_names(root))
     sys.meta_path.append(stand_ins)
-    sys.path[:0] = [str(file.parent), *_package_roots(root)]
+    package = _package_of(file)
+    sys.path[:0] = [*([] if package else [str(file.parent)]), *_package_roots(root)]
     sys.argv = [str(file), *(["--ros-args", "--params-file", params] if params else [])]
 
     def out_of_time(*args: Any) -> None:
@@ -196,6 +198,8 @@ def _run_original(root: Path, file: Path, params: str | None, class_name: str | 
     signal.alarm(RUN_SECONDS)
     stopped = ""
     namespace: dict[str, Any] = {"__name__": "__main__", "__file__": str(file)}
+    if package:  # as its console script runs it: a module of its package
+        namespace["__package__"] = package
     try:
         exec(compile(file.read_text("utf-8"), str(file), "exec"), namespace)
         if not built and callable(namespace.get("main")):
@@ -224,6 +228,17 @@ def _run_original(root: Path, file: Path, params: str | None, class_name: str | 
         "stopped": stopped,
         "stand_ins": missing,
     }
+
+
+def _package_of(file: Path) -> str:
+    """The dotted package ``file`` is a module of (its folders holding ``__init__.py``),
+    or "" for a script outside any package."""
+    parts: list[str] = []
+    folder = file.parent
+    while (folder / "__init__.py").exists():
+        parts.insert(0, folder.name)
+        folder = folder.parent
+    return ".".join(parts)
 
 
 def _what(exc: BaseException) -> str:

@@ -7,7 +7,8 @@ of its ``jazzy`` (or ``jazzy-devel``) branch where it has one, else of ``BRANCH`
 of its default branch. Printed, as manifest entries: every class, in a Python file
 outside test folders, that subclasses ``Node`` (or a node class of the same repository),
 is subclassed by no other node class, and calls ``declare_parameter``,
-``get_parameter``, ... or a method of a node class of the repository that calls one; at
+``get_parameter``, ... or, on ``self``, a method of a node class of the repository
+(other than ``__init__`` and the like) that calls one; at
 most the first ten of a repository by path; none in a file of the manifest's table. A
 folder is a test folder when a word of its name (split at ``_`` and ``-``) is test,
 tests or testing. A file with several such classes gives one entry per class
@@ -50,8 +51,8 @@ class Candidate:
     path: str
     cls: str
     bases: tuple[str, ...]
-    called: frozenset[str]  # the methods the class calls on self, or on anything
-    helpers: frozenset[str]  # its methods that declare or read parameters
+    called: frozenset[str]  # parameter calls on anything, and the methods called on self
+    helpers: frozenset[str]  # its methods (not __init__ and the like) calling one
     node_name: str | None
 
 
@@ -136,18 +137,24 @@ def _classes(path: str, text: bytes) -> list[Candidate]:
         helpers = frozenset(
             method.name
             for method in node.body
-            if isinstance(method, ast.FunctionDef) and _calls(method) & PARAMETER_CALLS
+            if isinstance(method, ast.FunctionDef)
+            and not method.name.startswith("__")
+            and _calls(method) & PARAMETER_CALLS
         )
         bases = tuple(_base_name(b) for b in node.bases)
-        found.append(Candidate(path, node.name, bases, _calls(node), helpers, _node_name(node)))
+        called = _calls(node) & PARAMETER_CALLS | _calls(node, on_self=True)
+        found.append(Candidate(path, node.name, bases, called, helpers, _node_name(node)))
     return found
 
 
-def _calls(node: ast.AST) -> frozenset[str]:
+def _calls(node: ast.AST, *, on_self: bool = False) -> frozenset[str]:
+    """The names of the methods called in ``node``: on anything, or on ``self`` only."""
     return frozenset(
         call.func.attr
         for call in ast.walk(node)
-        if isinstance(call, ast.Call) and isinstance(call.func, ast.Attribute)
+        if isinstance(call, ast.Call)
+        and isinstance(call.func, ast.Attribute)
+        and (not on_self or getattr(call.func.value, "id", "") == "self")
     )
 
 

@@ -367,8 +367,14 @@ class Evaluator:
 
     def _parameter_read(self, node: ast.Attribute) -> Any:
         """``x.get_parameter('n').value`` (or ``.get_parameter_value().double_value``) of a
-        parameter declared before, when the scope offers them: its value."""
+        parameter declared before, when the scope offers them: its value. So is
+        ``held.value`` where ``held = x.declare_parameter('n', ...)`` before it."""
         call: ast.AST = node.value
+        held = dotted_name(call) if node.attr == "value" else None
+        if held is not None and self.scope.parameters:
+            assigned = last_before(self.scope.local.get(held, []), node)
+            if isinstance(assigned, (ast.Assign, ast.AnnAssign)):
+                call = _declaring(assigned.value) or call
         if node.attr != "value":
             inner = node.value
             if not (
@@ -383,8 +389,9 @@ class Evaluator:
             self.scope.parameters
             and isinstance(call, ast.Call)
             and isinstance(call.func, ast.Attribute)
-            and call.func.attr == "get_parameter"
-            and len(call.args) == 1
+            and call.func.attr in ("get_parameter", "declare_parameter")
+            and (len(call.args) == 1 or call.func.attr == "declare_parameter")
+            and call.args
         ):
             return None
         name = self.value(call.args[0])
@@ -393,6 +400,17 @@ class Evaluator:
         self.parameters_read.append(name)
         value = self.scope.parameters[name]
         return list(value) if isinstance(value, list) else value
+
+
+def _declaring(value: ast.expr | None) -> ast.Call | None:
+    """``x.declare_parameter(...)``, the value a variable holding a parameter was given."""
+    if (
+        isinstance(value, ast.Call)
+        and isinstance(value.func, ast.Attribute)
+        and value.func.attr == "declare_parameter"
+    ):
+        return value
+    return None
 
 
 def _repeated(op: ast.operator, left: Any, right: Any) -> bool:

@@ -346,3 +346,30 @@ def test_fields_of_a_mapped_group_sharing_an_attribute_are_left_out_with_the_rea
         "gains.*.p_max: warning: 'p_max' and 'p-max' (of 'gains.*.p-max') of one namespace "
         "would share the Python attribute 'p_max': parameter left out"
     ) in err
+
+
+def test_a_default_read_from_a_parameter_held_in_a_variable_is_kept_with_a_note(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = tmp_path / "winch.py"
+    source.write_text(
+        "from rclpy.node import Node\n\n\n"
+        "class Limits:\n    def __init__(self, node):\n"
+        "        self.steps = node.declare_parameter('reel.steps', 4)\n"
+        "        low = node.declare_parameter('reel.up_min', 0.5)\n"
+        "        self.down = node.declare_parameter('reel.down_min', low.value)\n"
+        "        node.declare_parameter('reel.first', self.steps.value + 1)\n"
+        "        node.declare_parameter('reel.other', low.value * 2)\n\n\n"
+        "class Winch(Node):\n    def __init__(self):\n"
+        "        super().__init__('winch')\n        self.limits = Limits(self)\n",
+        encoding="utf-8",
+    )
+    code, out, err = run(capsys, str(source))
+    reel = yaml.safe_load(out)["parameters"]["reel"]
+    assert code == 0 and "warning" not in err, err
+    assert reel["down_min"] == {"type": "double", "default": 0.5}
+    assert reel["first"] == {"type": "int", "default": 5}
+    assert reel["other"] == {"type": "double", "default": 1.0}
+    assert "reel.down_min: note: a default computed from the parameter(s) 'reel.up_min'" in err
+    assert "reel.first: note: a default computed from the parameter(s) 'reel.steps'" in err
+    assert err.endswith("imported 5 of 5 parameters (3 approximately)\n")
