@@ -188,7 +188,13 @@ def _run_original(root: Path, file: Path, params: str | None, class_name: str | 
     stand_ins = _StandIns(_imported_names(root))
     sys.meta_path.append(stand_ins)
     package = _package_of(file)
-    sys.path[:0] = [*([] if package else [str(file.parent)]), *_package_roots(root)]
+    # a package's module is run from the package's parent; its own folder comes last, for
+    # the scripts installed beside each other that import one another
+    if package:
+        sys.path[:0] = [str(file.parents[package.count(".") + 1]), *_package_roots(root)]
+        sys.path.append(str(file.parent))
+    else:
+        sys.path[:0] = [str(file.parent), *_package_roots(root)]
     sys.argv = [str(file), *(["--ros-args", "--params-file", params] if params else [])]
 
     def out_of_time(*args: Any) -> None:
@@ -231,14 +237,24 @@ def _run_original(root: Path, file: Path, params: str | None, class_name: str | 
 
 
 def _package_of(file: Path) -> str:
-    """The dotted package ``file`` is a module of (its folders holding ``__init__.py``),
-    or "" for a script outside any package."""
+    """The dotted package ``file`` is a module of (its folders holding ``__init__.py``,
+    or its own folder when it imports relatively), or "" for a script outside any."""
     parts: list[str] = []
     folder = file.parent
     while (folder / "__init__.py").exists():
         parts.insert(0, folder.name)
         folder = folder.parent
+    if not parts and _imports_relatively(file):  # a namespace package's module
+        parts = [file.parent.name]
     return ".".join(parts)
+
+
+def _imports_relatively(file: Path) -> bool:
+    try:
+        tree = ast.parse(file.read_bytes())
+    except (SyntaxError, ValueError):
+        return False
+    return any(isinstance(n, ast.ImportFrom) and n.level for n in ast.walk(tree))
 
 
 def _what(exc: BaseException) -> str:
