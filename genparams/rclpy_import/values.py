@@ -38,6 +38,7 @@ from genparams.rclpy_import.scope import (
     constants,
     dotted_name,
     last_before,
+    read_call,
     unparsed,
 )
 
@@ -366,33 +367,10 @@ class Evaluator:
         return RangeValue(integer, values["from_value"], values["to_value"], values["step"])
 
     def _parameter_read(self, node: ast.Attribute) -> Any:
-        """``x.get_parameter('n').value`` (or ``.get_parameter_value().double_value``) of a
-        parameter declared before, when the scope offers them: its value. So is
-        ``held.value`` where ``held = x.declare_parameter('n', ...)`` before it."""
-        call: ast.AST = node.value
-        held = dotted_name(call) if node.attr == "value" else None
-        if held is not None and self.scope.parameters:
-            assigned = last_before(self.scope.local.get(held, []), node)
-            if isinstance(assigned, (ast.Assign, ast.AnnAssign)):
-                call = _declaring(assigned.value) or call
-        if node.attr != "value":
-            inner = node.value
-            if not (
-                node.attr.endswith("_value")
-                and isinstance(inner, ast.Call)
-                and isinstance(inner.func, ast.Attribute)
-                and inner.func.attr == "get_parameter_value"
-            ):
-                return None
-            call = inner.func.value
-        if not (
-            self.scope.parameters
-            and isinstance(call, ast.Call)
-            and isinstance(call.func, ast.Attribute)
-            and call.func.attr in ("get_parameter", "declare_parameter")
-            and (len(call.args) == 1 or call.func.attr == "declare_parameter")
-            and call.args
-        ):
+        """The value of a parameter declared before that ``node`` reads (``read_call``),
+        when the scope offers them."""
+        call = read_call(node, self.scope) if self.scope.parameters else None
+        if call is None:
             return None
         name = self.value(call.args[0])
         if not isinstance(name, str) or name not in self.scope.parameters:
@@ -400,17 +378,6 @@ class Evaluator:
         self.parameters_read.append(name)
         value = self.scope.parameters[name]
         return list(value) if isinstance(value, list) else value
-
-
-def _declaring(value: ast.expr | None) -> ast.Call | None:
-    """``x.declare_parameter(...)``, the value a variable holding a parameter was given."""
-    if (
-        isinstance(value, ast.Call)
-        and isinstance(value.func, ast.Attribute)
-        and value.func.attr == "declare_parameter"
-    ):
-        return value
-    return None
 
 
 def _repeated(op: ast.operator, left: Any, right: Any) -> bool:

@@ -1,6 +1,7 @@
 """import-rclpy on shapes that were mishandled: a script's ``__main__`` block, a
 declare_parameters list imported in part, a node of which nothing imports, the
-messages of a per-item parameter, names holding ``/``, ``-`` or ``type``."""
+messages of a per-item parameter, names holding ``/``, ``-`` or ``type``, a parameter
+held in a variable (``low = node.declare_parameter(...)``, read as ``low.value``)."""
 
 from __future__ import annotations
 
@@ -373,3 +374,24 @@ def test_a_default_read_from_a_parameter_held_in_a_variable_is_kept_with_a_note(
     assert "reel.down_min: note: a default computed from the parameter(s) 'reel.up_min'" in err
     assert "reel.first: note: a default computed from the parameter(s) 'reel.steps'" in err
     assert err.endswith("imported 5 of 5 parameters (3 approximately)\n")
+
+
+def test_a_condition_on_a_parameter_held_in_a_variable_becomes_its_when(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = tmp_path / "pump.py"
+    source.write_text(
+        "from rclpy.node import Node\n\n\n"
+        "class Pump(Node):\n    def __init__(self):\n"
+        "        super().__init__('pump')\n"
+        "        self.mode = self.declare_parameter('mode', 'flow')\n"
+        "        if self.mode.value == 'pressure':\n"
+        "            self.declare_parameter('target_bar', 2.0)\n",
+        encoding="utf-8",
+    )
+    code, out, err = run(capsys, str(source))
+    parameters = yaml.safe_load(out)["parameters"]
+    assert code == 0 and "warning" not in err, err
+    assert parameters["target_bar"] == {
+        "type": "double", "default": 2.0, "when": {"mode": "pressure"}
+    }  # fmt: skip
