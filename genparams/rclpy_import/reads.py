@@ -22,8 +22,13 @@ _NESTED = (ast.Lambda, ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp
 
 
 def condition_on(test: ast.expr, scope: Scope) -> tuple[str, tuple[Any, ...]] | None:
-    """``read == literal``, ``literal == read`` or ``read in (literals)``: the parameter
-    read and the values that make the test true; None for any other test."""
+    """``read == literal``, ``literal == read``, ``read in (literals)``, or a truth test
+    (``read``, ``not read``: true or false, which only a bool parameter compares equal
+    to): the parameter read and the values that make the test true; None for any other."""
+    negated = isinstance(test, ast.UnaryOp) and isinstance(test.op, ast.Not)
+    tested = parameter_read(test.operand if isinstance(test, ast.UnaryOp) else test, scope)
+    if tested is not None and (negated or not isinstance(test, ast.UnaryOp)):
+        return tested, (not negated,)
     if not isinstance(test, ast.Compare) or len(test.ops) != 1:
         return None
     left, right, op = test.left, test.comparators[0], test.ops[0]

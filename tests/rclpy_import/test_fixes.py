@@ -395,3 +395,37 @@ def test_a_condition_on_a_parameter_held_in_a_variable_becomes_its_when(
     assert parameters["target_bar"] == {
         "type": "double", "default": 2.0, "when": {"mode": "pressure"}
     }  # fmt: skip
+
+
+def test_a_truth_test_of_a_bool_parameter_becomes_its_when(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = tmp_path / "arm.py"
+    source.write_text(
+        "from rclpy.node import Node\n\n\n"
+        "class Arm(Node):\n    def __init__(self):\n"
+        "        super().__init__('arm')\n"
+        "        self.declare_parameter('simulated', False)\n"
+        "        self.declare_parameter('joints', 6)\n"
+        "        if self.get_parameter('simulated').value:\n"
+        "            self.declare_parameter('sim_rate', 100.0)\n"
+        "        live = self.get_parameter('simulated')\n"
+        "        if not live.value:\n"
+        "            self.declare_parameter('port', '/dev/arm')\n"
+        "        if self.get_parameter('joints').value:\n"
+        "            self.declare_parameter('wrist', True)\n",
+        encoding="utf-8",
+    )
+    code, out, err = run(capsys, str(source))
+    parameters = yaml.safe_load(out)["parameters"]
+    assert parameters["sim_rate"] == {"type": "double", "default": 100.0,
+                                      "when": {"simulated": True}}  # fmt: skip
+    assert parameters["port"] == {"type": "string", "default": "/dev/arm",
+                                  "when": {"simulated": False}}  # fmt: skip
+    assert "wrist" not in parameters
+    assert (
+        "wrist: warning: declared only under a condition (if self.get_parameter('joints')"
+        ".value): a value compared with 'joints' is not a int (a truth test translates on a "
+        "bool parameter only): parameter left out"
+    ) in err
+    assert code == 1 and err.endswith("imported 4 of 5 parameters; 1 left out (see warnings)\n")
