@@ -67,6 +67,8 @@ _FUNCTIONS: dict[str, Callable[..., Any]] = {
     "math.radians": math.radians,
     "math.degrees": math.degrees,
     "math.sqrt": math.sqrt,
+    "math.floor": math.floor,
+    "math.ceil": math.ceil,
     "abs": abs,
     "min": min,
     "max": max,
@@ -265,9 +267,12 @@ class Evaluator:
             arguments = [self.value(a) for a in node.args]
             if all(_is_number(a) for a in arguments):
                 try:
-                    return computed(*arguments)
+                    result = computed(*arguments)
                 except (ArithmeticError, TypeError, ValueError):
                     pass
+                else:  # numpy rounds to a float (np.floor(2.5) is 2.0), math to an int
+                    numpy = function.startswith(("np.", "numpy.")) and last in ("floor", "ceil")
+                    return float(result) if numpy else result
         if function in ("os.getenv", "getenv") or "environ" in function:
             raise UntranslatableError(node, "a value read from the environment")
         if last in ("get_parameter", "get_parameter_or", "get_parameters"):

@@ -217,6 +217,9 @@ def test_the_static_evaluator_reads_a_module_s_constants() -> None:
         return evaluate_constant(ast.parse(text, mode="eval").body, module)
 
     assert value("[HALF, np.pi / 2, f'{NAME}_link']") == [5.0, 1.5707963267948966, "cam_link"]
+    # numpy rounds to a float, which rclpy declares a double; math to an int
+    rounded = value("[np.floor(HALF / 2), numpy.ceil(2.1), math.floor(HALF / 2)]")
+    assert rounded == [2.0, 3.0, 2] and [type(r) for r in rounded] == [float, float, int]
     path = value("os.path.join(get_package_share_directory(NAME), 'config', 'a.yaml')")
     assert isinstance(path, SharePath) and path == "$(find-pkg-share cam)/config/a.yaml"
     with pytest.raises(UntranslatableError, match="the variable 'missing'"):
