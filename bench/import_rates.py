@@ -70,6 +70,7 @@ class Measured:
 
     parameters: int = 0  # as the import counts them (one per declaring statement or item)
     exact: int = 0  # counted exact by the import and not contradicted on a real node
+    checked: int = 0  # of them, declared alike by the node's own run
     approximate: int = 0
     left_out: int = 0
     differ: tuple[str, ...] = ()  # exact by the import, declared otherwise on a real node
@@ -230,9 +231,12 @@ def _compared(
     finished = node.get("node") is not None and node.get("stopped", "") in FINISHED
     class_only = sorted(set(ours) - set(theirs)) if finished else []
     wrong = [n for n in [*differ, *class_only] if schema_key(exact_keys, n) is not None]
+    wrong_keys = {schema_key(exact_keys, n) for n in wrong}
+    alike = {schema_key(exact_keys, n) for n in set(ours) & set(theirs) if ours[n] == theirs[n]}
     return replace(
         counts,
-        exact=counts.exact - len({schema_key(exact_keys, n) for n in wrong}),
+        exact=counts.exact - len(wrong_keys),
+        checked=len(alike - wrong_keys - {None}),
         differ=tuple(differ),
         class_only=tuple(class_only),
         node_only=tuple(sorted(set(theirs) - set(ours))),
