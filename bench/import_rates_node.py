@@ -4,11 +4,12 @@ writes one JSON object to ``--out FILE``.
 ``original ROOT FILE``: the public node's own code runs, as ``ros2 run`` would start it
 (``FILE`` as ``__main__``, a module of its package where it is in one, its repository's
 packages importable, ``--ros-args --params-file`` in ``sys.argv``). Modules this
-environment lacks (message packages, drivers, ``carla``) are stand-ins; spinning stops
-the run at once, and so does a timer, so a node is read as its constructor left it.
-Every node built is kept; the one read is the class asked for, else the first built by a
-class of the file, else the first built; a file that builds none when run has its first
-node class built, without arguments.
+environment lacks (message packages, drivers, ``carla``) are stand-ins, and
+``get_package_share_directory`` finds the repository's packages (their own folders);
+spinning stops the run at once, and so does a timer, so a node is read as its
+constructor left it. Every node built is kept; the one read is the class asked for, else
+the first built by a class of the file, else the first built; a file that builds none
+when run has its first node class built, without arguments.
 
 ``generated MODULE CLASS NODE``: a fresh node named ``NODE`` declares the generated class
 ``CLASS`` of ``MODULE`` (with the params file, as the original was started).
@@ -30,6 +31,7 @@ import types
 from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
 from typing import Any
+from xml.etree import ElementTree
 
 import rclpy
 import rclpy.executors
@@ -185,6 +187,7 @@ def _run_original(root: Path, file: Path, params: str | None, class_name: str | 
         for name in ("spin", "spin_once", "spin_until_future_complete"):
             setattr(owner, name, _stop)
     rclpy.init = _init_as_newer_rclpy(rclpy.init)
+    os.environ["AMENT_PREFIX_PATH"] = str(_ament_prefix(root))
     stand_ins = _StandIns(_imported_names(root))
     sys.meta_path.append(stand_ins)
     package = _package_of(file)
@@ -234,6 +237,24 @@ def _run_original(root: Path, file: Path, params: str | None, class_name: str | 
         "stopped": stopped,
         "stand_ins": missing,
     }
+
+
+def _ament_prefix(root: Path) -> Path:
+    """An install prefix beside the repository where every package of it is found, as
+    ``get_package_share_directory`` looks them up: its share directory is its folder."""
+    prefix = root.parent / f"{root.name}.ament"
+    index = prefix / "share" / "ament_index" / "resource_index" / "packages"
+    index.mkdir(parents=True, exist_ok=True)
+    for manifest in root.rglob("package.xml"):
+        try:
+            name = ElementTree.parse(manifest).findtext("name")
+        except ElementTree.ParseError:
+            continue
+        share = prefix / "share" / (name or "").strip()
+        if name and name.strip() and not share.exists():
+            (index / name.strip()).touch()
+            share.symlink_to(manifest.parent.resolve(), target_is_directory=True)
+    return prefix
 
 
 def _package_of(file: Path) -> str:
