@@ -129,8 +129,10 @@ def export(mirrors: Path, entry: Entry, into: Path) -> Path:
 def _child(args: list[str]) -> dict[str, Any]:
     """One run of bench.import_rates_node, on a terminal of its own (a teleop node draws
     on one); its JSON, or the reason it gave none."""
+    repository = Path(__file__).parent.parent
     env = dict(os.environ, ROS_AUTOMATIC_DISCOVERY_RANGE="LOCALHOST", ROS_VERSION="2",
-               TERM="xterm")  # fmt: skip
+               TERM="xterm", PYTHONPATH=os.pathsep.join(
+                   [str(repository), *filter(None, [os.environ.get("PYTHONPATH")])]))  # fmt: skip
     with tempfile.TemporaryDirectory(prefix="import-rates-run-") as temp:
         out = Path(temp) / "declared.json"
         controller, terminal = pty.openpty()
@@ -140,7 +142,7 @@ def _child(args: list[str]) -> dict[str, Any]:
             subprocess.run(
                 [sys.executable, "-m", "bench.import_rates_node", "--out", str(out), *args],
                 stdin=terminal, stdout=terminal, stderr=terminal, timeout=RUN_TIMEOUT,
-                env=env, check=False, cwd=Path(__file__).parent.parent,
+                env=env, check=False, cwd=temp,  # what a node writes stays in there
             )  # fmt: skip
         except subprocess.TimeoutExpired:
             return {"declared": {}, "stopped": "no answer in time", "node": None}

@@ -35,6 +35,7 @@ from genparams.rclpy_import.scope import Scope, UntranslatableError, unparsed
 from genparams.rclpy_import.shapes import (
     OPEN_OPTIONS,
     called,
+    called_once_under_if,
     calls_to,
     declares,
     defines,
@@ -42,7 +43,9 @@ from genparams.rclpy_import.shapes import (
     hands_node,
     is_helper,
     is_node_class,
+    known_truth,
     super_called,
+    super_init_call,
 )
 from genparams.rclpy_import.values import Evaluator
 
@@ -95,6 +98,7 @@ class _Scanner:
         self.view: ModuleView | None = None
         self.stack: list[ast.AST] = []  # helpers and classes being followed
         self.in_class = False  # the module's own functions are read as they are, not followed
+        self.read_where_called: set[ast.AST] = set()  # methods read at their calls
 
     def unit(self, name: str, node: ast.ClassDef | ast.Module) -> Unit:
         c = self.collected
@@ -134,13 +138,18 @@ class _Scanner:
         """Scan the methods of ``cls`` and of its base classes in the package (farthest
         first; a method overridden is read where ``super()`` reaches it)."""
         chain = self.resolver.chain(cls)
+        guarded = called_once_under_if(chain)
+        self.read_where_called.update(
+            s for c in chain for s in c.definition.body
+            if isinstance(s, ast.FunctionDef) and s.name in guarded
+        )  # fmt: skip
         for depth, current in reversed(list(enumerate(chain))):
             scope = self.class_scope(chain[depth:])
             nearer = chain[:depth]
             for statement in current.definition.body:
                 if not isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef)):
                     continue
-                if is_helper(statement):
+                if is_helper(statement) or statement in self.read_where_called:
                     continue  # read where it is called
                 if any(defines(c, statement.name) for c in nearer) and not super_called(
                     nearer, statement.name
@@ -153,6 +162,11 @@ class _Scanner:
                 bound: dict[str, Any] = {}
                 if statement.name == "__init__" and built is not None and caller is not None:
                     bound = self.bound_arguments(statement, built, caller, scope)
+                elif statement.name == "__init__" and depth > 0:  # super().__init__(...)
+                    reached = super_init_call(chain[depth - 1])
+                    caller_scope = self.class_scope(chain[depth - 1 :])
+                    if reached is not None:
+                        bound = self.bound_arguments(statement, reached, caller_scope, scope)
                 self.function(statement, scope, context, bound)
 
     def class_scope(self, chain: list[ClassFound]) -> Scope:
@@ -222,6 +236,9 @@ class _Scanner:
             self.expressions(statement.test, statement, scope, context)
             self.walk(statement.body, scope, context)  # declares once, whatever the test
             self.walk(statement.orelse, scope, context)
+        elif isinstance(statement, ast.If) and known_truth(statement.test, scope) is not None:
+            taken = known_truth(statement.test, scope)  # an argument given a bool
+            self.walk(statement.body if taken else statement.orelse, scope, context)
         elif isinstance(statement, ast.If):
             inner = context.changed(
                 condition=context.condition or f"if {unparsed(statement.test)}",
@@ -364,7 +381,8 @@ class _Scanner:
             helper in self.stack or not (declares(helper) or is_helper(helper))
         ):
             return
-        if helper is not None and (is_helper(helper) or (module_function and self.in_class)):
+        inlined = helper in self.read_where_called or (module_function and self.in_class)
+        if helper is not None and (is_helper(helper) or inlined):
             source = module_function.module.source if module_function else context.source
             helper_scope = module_function.module.scope() if module_function else scope
             self.inline(helper, call, scope, helper_scope, context.changed(

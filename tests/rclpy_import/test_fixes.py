@@ -1,7 +1,8 @@
 """import-rclpy on shapes that were mishandled: a script's ``__main__`` block, a
 declare_parameters list imported in part, a node of which nothing imports, the
 messages of a per-item parameter, names holding ``/``, ``-`` or ``type``, a parameter
-held in a variable (``low = node.declare_parameter(...)``, read as ``low.value``)."""
+held in a variable (``low = node.declare_parameter(...)``, read as ``low.value``), a
+method called once under an ``if``, an ``if`` on a base constructor's argument."""
 
 from __future__ import annotations
 
@@ -429,3 +430,58 @@ def test_a_truth_test_of_a_bool_parameter_becomes_its_when(
         "bool parameter only): parameter left out"
     ) in err
     assert code == 1 and err.endswith("imported 4 of 5 parameters; 1 left out (see warnings)\n")
+
+
+def test_a_method_called_once_under_an_if_declares_under_that_if(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = tmp_path / "dryer.py"
+    source.write_text(
+        "import os\nfrom rclpy.node import Node\n\n\n"
+        "class Dryer(Node):\n    def __init__(self):\n"
+        "        super().__init__('dryer')\n"
+        "        self.declare_parameter('heated', False)\n"
+        "        if self.get_parameter('heated').value:\n"
+        "            self.heater_settings()\n"
+        "        if os.environ.get('DRYER_FAN'):\n"
+        "            self.fan_settings()\n\n"
+        "    def heater_settings(self):\n"
+        "        self.declare_parameter('temperature', 60.0)\n\n"
+        "    def fan_settings(self):\n"
+        "        self.declare_parameter('fan_speed', 3)\n",
+        encoding="utf-8",
+    )
+    code, out, err = run(capsys, str(source))
+    parameters = yaml.safe_load(out)["parameters"]
+    assert parameters["temperature"] == {"type": "double", "default": 60.0,
+                                         "when": {"heated": True}}  # fmt: skip
+    assert "fan_speed" not in parameters
+    assert (
+        "fan_speed: warning: declared only under a condition (if os.environ.get('DRYER_FAN'))"
+    ) in err
+    assert code == 1 and err.endswith("imported 2 of 3 parameters; 1 left out (see warnings)\n")
+
+
+@pytest.mark.parametrize(("given", "declared"), [("", True), (", False", False),
+                                                 (", with_fan=True", True)])  # fmt: skip
+def test_a_base_constructor_s_if_on_its_argument_follows_what_super_gives_it(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], given: str, declared: bool
+) -> None:
+    source = tmp_path / "oven.py"
+    source.write_text(
+        "from rclpy.node import Node\n\n\n"
+        "class Appliance(Node):\n    def __init__(self, name, with_fan=True):\n"
+        "        super().__init__(name)\n        if with_fan:\n"
+        "            self.fan()\n        if not with_fan:\n"
+        "            self.declare_parameter('vent_open', True)\n\n"
+        "    def fan(self):\n        self.declare_parameter('fan_speed', 2)\n\n\n"
+        "class Oven(Appliance):\n    def __init__(self):\n"
+        f"        super().__init__('oven'{given})\n"
+        "        self.declare_parameter('temperature', 180.0)\n",
+        encoding="utf-8",
+    )
+    code, out, err = run(capsys, str(source), "--class", "Oven")
+    parameters = yaml.safe_load(out)["parameters"]
+    assert code == 0 and "warning" not in err, err
+    assert ("fan_speed" in parameters) is declared
+    assert ("vent_open" in parameters) is not declared
