@@ -17,7 +17,12 @@ from typing import Any
 
 from genparams.rclpy_import.declarations import Context, declare_many, declare_one, read
 from genparams.rclpy_import.found import Found, NodeOption, Unit
-from genparams.rclpy_import.overrides import BY_PREFIX, OVERRIDES, keys_under
+from genparams.rclpy_import.overrides import (
+    BY_PREFIX,
+    OVERRIDES,
+    keys_under,
+    over_own_parameters,
+)
 from genparams.rclpy_import.reads import (
     DECLARE_MANY,
     DECLARE_ONE,
@@ -304,6 +309,8 @@ class _Scanner:
                 loop_prefix=keys.prefix if keys is not None else None,
                 loop_source=keys.source if keys is not None else None,
             )
+            if isinstance(loop.target, ast.Name) and over_own_parameters(loop.iter):
+                inner = inner.changed(own_name=loop.target.id)
             self.walk(loop.body, scope, inner)
         self.walk(loop.orelse, scope, context)
 
@@ -315,7 +322,7 @@ class _Scanner:
         for call, nested in calls_in(root, None):
             inner = context.changed(nested=context.nested or nested)
             self.call(call, statement, scope, inner)
-            if reads_one(call):
+            if reads_one(call) and not _reads_own(call, inner):
                 if parents is None:
                     parents = {c: p for p in ast.walk(root) for c in ast.iter_child_nodes(p)}
                 kind = accessor(call, parents)
@@ -503,3 +510,10 @@ class _Scanner:
                 and node.func.attr == BY_PREFIX
             ):
                 self.option(node, context, f"{BY_PREFIX}()")
+
+
+def _reads_own(call: ast.Call, context: Context) -> bool:
+    """A read named by a loop's item over the node's own parameter names: of one it
+    declared already, not a parameter of its own."""
+    name = call.args[0] if call.args else None
+    return isinstance(name, ast.Name) and name.id == context.own_name

@@ -2,7 +2,8 @@
 declare_parameters list imported in part, a node of which nothing imports, the
 messages of a per-item parameter, names holding ``/``, ``-`` or ``type``, a parameter
 held in a variable (``low = node.declare_parameter(...)``, read as ``low.value``), a
-method called once under an ``if``, an ``if`` on a base constructor's argument."""
+method called once under an ``if``, an ``if`` on a base constructor's argument, a read of
+every parameter the node has."""
 
 from __future__ import annotations
 
@@ -485,3 +486,28 @@ def test_a_base_constructor_s_if_on_its_argument_follows_what_super_gives_it(
     assert code == 0 and "warning" not in err, err
     assert ("fan_speed" in parameters) is declared
     assert ("vent_open" in parameters) is not declared
+
+
+@pytest.mark.parametrize(
+    "names",
+    ["sorted(self._parameters.keys())", "self._parameters", "list(self._parameter_overrides)"],
+)
+def test_reading_every_parameter_the_node_has_declares_nothing_more(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], names: str
+) -> None:
+    node = tmp_path / "mixer.py"
+    node.write_text(
+        "from rclpy.node import Node\n\n\nclass Mixer(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('mixer', automatically_declare_parameters_from_overrides=True)\n"
+        "        self.settings = {}\n"
+        f"        for name in {names}:\n"
+        "            self.settings[name] = self.get_parameter(name).value\n",
+        encoding="utf-8",
+    )
+    params = tmp_path / "mixer.yaml"
+    params.write_text("mixer:\n  ros__parameters:\n    bowl: {speed: 3}\n", encoding="utf-8")
+    code, out, err = run(capsys, str(node), "--params-file", str(params))
+    assert code == 0 and "warning" not in err, err
+    assert yaml.safe_load(out)["parameters"] == {"bowl": {"speed": {"type": "int", "default": 3}}}
+    assert err.endswith("imported 1 of 1 parameters\n")
