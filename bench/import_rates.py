@@ -70,6 +70,7 @@ class Measured:
 
     parameters: int = 0  # as the import counts them (one per declaring statement or item)
     exact: int = 0  # counted exact by the import and not contradicted on a real node
+    checked: int = 0  # of them, declared alike by the node's own run
     approximate: int = 0
     left_out: int = 0
     differ: tuple[str, ...] = ()  # exact by the import, declared otherwise on a real node
@@ -128,8 +129,10 @@ def export(mirrors: Path, entry: Entry, into: Path) -> Path:
 def _child(args: list[str]) -> dict[str, Any]:
     """One run of bench.import_rates_node, on a terminal of its own (a teleop node draws
     on one); its JSON, or the reason it gave none."""
+    repository = Path(__file__).parent.parent
     env = dict(os.environ, ROS_AUTOMATIC_DISCOVERY_RANGE="LOCALHOST", ROS_VERSION="2",
-               TERM="xterm")  # fmt: skip
+               TERM="xterm", PYTHONPATH=os.pathsep.join(
+                   [str(repository), *filter(None, [os.environ.get("PYTHONPATH")])]))  # fmt: skip
     with tempfile.TemporaryDirectory(prefix="import-rates-run-") as temp:
         out = Path(temp) / "declared.json"
         controller, terminal = pty.openpty()
@@ -139,7 +142,7 @@ def _child(args: list[str]) -> dict[str, Any]:
             subprocess.run(
                 [sys.executable, "-m", "bench.import_rates_node", "--out", str(out), *args],
                 stdin=terminal, stdout=terminal, stderr=terminal, timeout=RUN_TIMEOUT,
-                env=env, check=False, cwd=Path(__file__).parent.parent,
+                env=env, check=False, cwd=temp,  # what a node writes stays in there
             )  # fmt: skip
         except subprocess.TimeoutExpired:
             return {"declared": {}, "stopped": "no answer in time", "node": None}
@@ -230,9 +233,12 @@ def _compared(
     finished = node.get("node") is not None and node.get("stopped", "") in FINISHED
     class_only = sorted(set(ours) - set(theirs)) if finished else []
     wrong = [n for n in [*differ, *class_only] if schema_key(exact_keys, n) is not None]
+    wrong_keys = {schema_key(exact_keys, n) for n in wrong}
+    alike = {schema_key(exact_keys, n) for n in set(ours) & set(theirs) if ours[n] == theirs[n]}
     return replace(
         counts,
-        exact=counts.exact - len({schema_key(exact_keys, n) for n in wrong}),
+        exact=counts.exact - len(wrong_keys),
+        checked=len(alike - wrong_keys - {None}),
         differ=tuple(differ),
         class_only=tuple(class_only),
         node_only=tuple(sorted(set(theirs) - set(ours))),

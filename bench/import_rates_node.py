@@ -2,11 +2,14 @@
 writes one JSON object to ``--out FILE``.
 
 ``original ROOT FILE``: the public node's own code runs, as ``ros2 run`` would start it
-(``FILE`` as ``__main__``, its repository's packages importable, ``--ros-args
---params-file`` in ``sys.argv``). Modules this environment lacks (message packages,
-drivers, ``carla``) are stand-ins; spinning stops the run at once, and so does a timer, so
-a node is read as its constructor left it. Every node built is kept; the one read is the
-class asked for, else the first built by a class of the file, else the first built.
+(``FILE`` as ``__main__``, a module of its package where it is in one, its repository's
+packages importable, ``--ros-args --params-file`` in ``sys.argv``). Modules this
+environment lacks (message packages, drivers, ``carla``) are stand-ins, and
+``get_package_share_directory`` finds the repository's packages (their own folders);
+spinning stops the run at once, and so does a timer, so a node is read as its
+constructor left it. Every node built is kept; the one read is the class asked for, else
+the first built by a class of the file, else the first built; a file that builds none
+when run has its first node class built, without arguments.
 
 ``generated MODULE CLASS NODE``: a fresh node named ``NODE`` declares the generated class
 ``CLASS`` of ``MODULE`` (with the params file, as the original was started).
@@ -28,6 +31,7 @@ import types
 from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
 from typing import Any
+from xml.etree import ElementTree
 
 import rclpy
 import rclpy.executors
@@ -183,9 +187,17 @@ def _run_original(root: Path, file: Path, params: str | None, class_name: str | 
         for name in ("spin", "spin_once", "spin_until_future_complete"):
             setattr(owner, name, _stop)
     rclpy.init = _init_as_newer_rclpy(rclpy.init)
+    os.environ["AMENT_PREFIX_PATH"] = str(_ament_prefix(root))
     stand_ins = _StandIns(_imported_names(root))
     sys.meta_path.append(stand_ins)
-    sys.path[:0] = [str(file.parent), *_package_roots(root)]
+    package = _package_of(file)
+    # a package's module is run from the package's parent; its own folder comes last, for
+    # the scripts installed beside each other that import one another
+    if package:
+        sys.path[:0] = [str(file.parents[package.count(".") + 1]), *_package_roots(root)]
+        sys.path.append(str(file.parent))
+    else:
+        sys.path[:0] = [str(file.parent), *_package_roots(root)]
     sys.argv = [str(file), *(["--ros-args", "--params-file", params] if params else [])]
 
     def out_of_time(*args: Any) -> None:
@@ -195,12 +207,18 @@ def _run_original(root: Path, file: Path, params: str | None, class_name: str | 
     signal.alarm(RUN_SECONDS)
     stopped = ""
     namespace: dict[str, Any] = {"__name__": "__main__", "__file__": str(file)}
+    if package:  # as its console script runs it: a module of its package
+        namespace["__package__"] = package
     try:
         exec(compile(file.read_text("utf-8"), str(file), "exec"), namespace)
         if not built and callable(namespace.get("main")):
             namespace["main"]()
     except BaseException as exc:  # the node's own code: whatever it raises ends the run
         stopped = "spin" if isinstance(exc, Stopped) and str(exc) == "spin" else _what(exc)
+    if class_name is None and not built:  # a module that builds no node: its node class
+        class_name = next((name for name, value in namespace.items()
+                           if isinstance(value, type) and issubclass(value, Node)
+                           and value.__module__ == "__main__"), None)  # fmt: skip
     if class_name and not any(type(n).__name__ == class_name for n in built):
         try:
             if not rclpy.utilities.ok():
@@ -219,6 +237,45 @@ def _run_original(root: Path, file: Path, params: str | None, class_name: str | 
         "stopped": stopped,
         "stand_ins": missing,
     }
+
+
+def _ament_prefix(root: Path) -> Path:
+    """An install prefix beside the repository where every package of it is found, as
+    ``get_package_share_directory`` looks them up: its share directory is its folder."""
+    prefix = root.parent / f"{root.name}.ament"
+    index = prefix / "share" / "ament_index" / "resource_index" / "packages"
+    index.mkdir(parents=True, exist_ok=True)
+    for manifest in root.rglob("package.xml"):
+        try:
+            name = ElementTree.parse(manifest).findtext("name")
+        except ElementTree.ParseError:
+            continue
+        share = prefix / "share" / (name or "").strip()
+        if name and name.strip() and not share.exists():
+            (index / name.strip()).touch()
+            share.symlink_to(manifest.parent.resolve(), target_is_directory=True)
+    return prefix
+
+
+def _package_of(file: Path) -> str:
+    """The dotted package ``file`` is a module of (its folders holding ``__init__.py``,
+    or its own folder when it imports relatively), or "" for a script outside any."""
+    parts: list[str] = []
+    folder = file.parent
+    while (folder / "__init__.py").exists():
+        parts.insert(0, folder.name)
+        folder = folder.parent
+    if not parts and _imports_relatively(file):  # a namespace package's module
+        parts = [file.parent.name]
+    return ".".join(parts)
+
+
+def _imports_relatively(file: Path) -> bool:
+    try:
+        tree = ast.parse(file.read_bytes())
+    except (SyntaxError, ValueError):
+        return False
+    return any(isinstance(n, ast.ImportFrom) and n.level for n in ast.walk(tree))
 
 
 def _what(exc: BaseException) -> str:

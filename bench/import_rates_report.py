@@ -10,8 +10,8 @@ if TYPE_CHECKING:
 
 HEADER = (
     "| repository | node file | commit | params file | file by file: exact | whole: declared "
-    "| exact | approximate | left out (warned) | the node's own run |\n"
-    "|---|---|---|---|---|---|---|---|---|---|\n"
+    "| exact | of them checked | approximate | left out (warned) | the node's own run |\n"
+    "|---|---|---|---|---|---|---|---|---|---|---|\n"
 )
 
 
@@ -44,10 +44,10 @@ def _line(row: Row) -> str:
     params = f"`{entry.params}`" if entry.params else ""
     cells = [entry.repo, file, f"`{entry.commit[:10]}`", params, _by_file(row.by_file)]
     if whole.crash:
-        cells += [f"crash: {whole.crash}", "", "", ""]
+        cells += [f"crash: {whole.crash}", "", "", "", ""]
     else:
-        cells += [str(whole.parameters), str(whole.exact), str(whole.approximate),
-                  str(whole.left_out)]  # fmt: skip
+        cells += [str(whole.parameters), str(whole.exact), str(whole.checked),
+                  str(whole.approximate), str(whole.left_out)]  # fmt: skip
     cells.append(_node_run(row))
     return "| " + " | ".join(cells) + " |\n"
 
@@ -60,6 +60,7 @@ def _total(label: str, rows: Sequence[Row]) -> str:
         f"**{label}: {len(rows)} nodes**", "", "", "",
         f"**{_share(file_exact, file_all)}**", f"**{whole_all}**",
         f"**{_share(sum(r.whole.exact for r in rows), whole_all)}**",
+        f"**{sum(r.whole.checked for r in rows)}**",
         f"**{sum(r.whole.approximate for r in rows)}**",
         f"**{sum(r.whole.left_out for r in rows)}**",
         f"**{sum(len(r.node.get('declared', {})) for r in rows)} declared**",

@@ -35,6 +35,9 @@ class Context:
     via: str | None = None  # the helper, base class or object declaring for the node
     call_site: Location | None = None  # where a helper declaring for the node is called
     reads: tuple[str, ...] = ()  # parameters the helper's arguments were computed from
+    # The variable of a loop over the node's own parameter names (``for name in
+    # self._parameters``): a read of it reads a parameter declared already.
+    own_name: str | None = None
 
     def changed(self, **changes: Any) -> Context:
         return replace(self, **changes)

@@ -63,6 +63,23 @@ def keys_under(node: ast.AST, scope: Scope, depth: int = 0) -> KeysUnder | None:
     return keys_under(statement.value, scope, depth + 1)
 
 
+_OWN = ("_parameters", OVERRIDES)  # rclpy's tables of a node's parameters, by full name
+
+
+def over_own_parameters(node: ast.AST) -> bool:
+    """``self._parameters`` or ``self._parameter_overrides`` (maybe ``.keys()``, maybe in
+    ``sorted()`` and the like): the names of the node's own parameters."""
+    while isinstance(node, ast.Call) and not node.keywords:
+        func = node.func
+        if isinstance(func, ast.Name) and func.id in _WRAPPERS and len(node.args) == 1:
+            node = node.args[0]
+        elif isinstance(func, ast.Attribute) and func.attr == "keys" and not node.args:
+            node = func.value
+        else:
+            return False
+    return isinstance(node, ast.Attribute) and node.attr in _OWN
+
+
 _PURE = ("split", "partition", "startswith", "keys", BY_PREFIX)
 
 

@@ -1,11 +1,13 @@
 """The node's own package, read as files: where it starts, and which file an import names.
 
 The package's root is the nearest folder above the node file holding ``package.xml``,
-``setup.py`` or ``pyproject.toml``. Relative imports (``from .driver import Driver``)
-and the package's own absolute ones (``from my_pkg.config import RATE``) are followed
-to files under that root, and so are imports of a ROS package beside it (``package.xml``
-in both: another package of the same workspace or repository); anything else (rclpy,
-numpy) is not. Files are parsed, never run, and at most ``MAX_FILES`` of them are read.
+``setup.py``, ``setup.cfg`` or ``pyproject.toml``; without one, the folder above the
+Python package the file is in (its folders holding ``__init__.py``). Relative imports
+(``from .driver import Driver``) and the package's own absolute ones (``from
+my_pkg.config import RATE``) are followed to files under that root, and so are imports
+of a ROS package beside it (``package.xml`` in both: another package of the same
+workspace or repository); anything else (rclpy, numpy) is not. Files are parsed, never
+run, and at most ``MAX_FILES`` of them are read.
 """
 
 from __future__ import annotations
@@ -19,7 +21,7 @@ from genparams.rclpy_import.found import SourceFile
 MAX_FILES = 32  # files of the package read besides the node file
 MAX_BYTES = 1_000_000  # a larger file is not read
 _ROS_MARKER = "package.xml"
-_MARKERS = (_ROS_MARKER, "setup.py", "pyproject.toml")
+_MARKERS = (_ROS_MARKER, "setup.py", "setup.cfg", "pyproject.toml")
 _MAX_UP = 6  # folders above the node file searched for the root
 _MAX_SIBLINGS = 64  # folders beside the root looked at for other packages
 
@@ -48,7 +50,10 @@ class Package:
         for folder in [here, *list(here.parents)[:_MAX_UP]]:
             if any((folder / marker).is_file() for marker in _MARKERS):
                 return cls(node_file.resolve(), folder)
-        return cls(node_file.resolve(), None)
+        top = here  # else the Python package the file is in: above its last __init__.py
+        while (top / "__init__.py").is_file() and top.parent != top:
+            top = top.parent
+        return cls(node_file.resolve(), top if top != here else None)
 
     def module(self, path: Path) -> ModuleFile | None:
         """The parsed file, or None (outside the package, too many files, unreadable)."""

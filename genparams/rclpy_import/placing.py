@@ -133,7 +133,10 @@ class SchemaTree:
 
     def when(self, found: Found) -> tuple[dict[str, Any] | None, str]:
         """The ``when:`` of a declaration under ``if``, or why it cannot have one."""
-        simple = "only == or in against literals of a parameter declared before it translates"
+        simple = (
+            "only == or in against literals, or a bool's truth, of a parameter declared "
+            "before it translates"
+        )
         if found.when is None:
             return None, simple
         name, values = found.when
@@ -148,7 +151,10 @@ class SchemaTree:
             )
         kept = [condition_value(kind, v) for v in values]
         if any(v is None for v in kept):
-            return None, f"a value compared with {name!r} is not a {kind}"
+            return None, (
+                f"a value compared with {name!r} is not a {kind} (a truth test translates "
+                "on a bool parameter only)"
+            )
         return {name: kept[0] if len(kept) == 1 else kept}, ""
 
     def per_entry(self, name: str) -> bool:

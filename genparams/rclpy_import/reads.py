@@ -12,6 +12,7 @@ from genparams.rclpy_import.scope import (
     Scope,
     UntranslatableError,
     assigned_once_before,
+    read_call,
 )
 from genparams.rclpy_import.values import Evaluator
 
@@ -21,8 +22,13 @@ _NESTED = (ast.Lambda, ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp
 
 
 def condition_on(test: ast.expr, scope: Scope) -> tuple[str, tuple[Any, ...]] | None:
-    """``read == literal``, ``literal == read`` or ``read in (literals)``: the parameter
-    read and the values that make the test true; None for any other test."""
+    """``read == literal``, ``literal == read``, ``read in (literals)``, or a truth test
+    (``read``, ``not read``: true or false, which only a bool parameter compares equal
+    to): the parameter read and the values that make the test true; None for any other."""
+    negated = isinstance(test, ast.UnaryOp) and isinstance(test.op, ast.Not)
+    tested = parameter_read(test.operand if isinstance(test, ast.UnaryOp) else test, scope)
+    if tested is not None and (negated or not isinstance(test, ast.UnaryOp)):
+        return tested, (not negated,)
     if not isinstance(test, ast.Compare) or len(test.ops) != 1:
         return None
     left, right, op = test.left, test.comparators[0], test.ops[0]
@@ -40,33 +46,16 @@ def condition_on(test: ast.expr, scope: Scope) -> tuple[str, tuple[Any, ...]] | 
     return (name, tuple(value)) if isinstance(value, (list, tuple)) and value else None
 
 
-_READS = ("get_parameter", DECLARE_ONE)
 _MAX_READS = 4  # variables assigned from variables assigned from a read
 
 
 def parameter_read(node: ast.AST, scope: Scope, depth: int = 0) -> str | None:
     """The parameter whose value ``node`` is: ``x.get_parameter('a').value`` (or
     ``.get_parameter_value().string_array_value``, or the value a ``declare_parameter``
-    returns), or a variable (``v``, ``self.v``) the function assigns once, from one,
-    before this use."""
-    call: ast.AST | None = None
-    if isinstance(node, ast.Attribute) and node.attr == "value":
-        call = node.value
-    elif isinstance(node, ast.Attribute) and node.attr.endswith("_value"):
-        inner = node.value
-        if (
-            isinstance(inner, ast.Call)
-            and isinstance(inner.func, ast.Attribute)
-            and inner.func.attr == "get_parameter_value"
-            and not inner.args
-        ):
-            call = inner.func.value
-    if (
-        isinstance(call, ast.Call)
-        and isinstance(call.func, ast.Attribute)
-        and call.func.attr in _READS
-        and call.args
-    ):
+    returns, or a variable holding what it returns: ``read_call``), or a variable (``v``,
+    ``self.v``) the function assigns once, from one, before this use."""
+    call = read_call(node, scope)
+    if call is not None:
         try:
             name = Evaluator(scope).value(call.args[0])
         except UntranslatableError:

@@ -17,7 +17,12 @@ from typing import Any
 
 from genparams.rclpy_import.declarations import Context, declare_many, declare_one, read
 from genparams.rclpy_import.found import Found, NodeOption, Unit
-from genparams.rclpy_import.overrides import BY_PREFIX, OVERRIDES, keys_under
+from genparams.rclpy_import.overrides import (
+    BY_PREFIX,
+    OVERRIDES,
+    keys_under,
+    over_own_parameters,
+)
 from genparams.rclpy_import.reads import (
     DECLARE_MANY,
     DECLARE_ONE,
@@ -35,6 +40,7 @@ from genparams.rclpy_import.scope import Scope, UntranslatableError, unparsed
 from genparams.rclpy_import.shapes import (
     OPEN_OPTIONS,
     called,
+    called_once_under_if,
     calls_to,
     declares,
     defines,
@@ -42,7 +48,9 @@ from genparams.rclpy_import.shapes import (
     hands_node,
     is_helper,
     is_node_class,
+    known_truth,
     super_called,
+    super_init_call,
 )
 from genparams.rclpy_import.values import Evaluator
 
@@ -95,6 +103,7 @@ class _Scanner:
         self.view: ModuleView | None = None
         self.stack: list[ast.AST] = []  # helpers and classes being followed
         self.in_class = False  # the module's own functions are read as they are, not followed
+        self.read_where_called: set[ast.AST] = set()  # methods read at their calls
 
     def unit(self, name: str, node: ast.ClassDef | ast.Module) -> Unit:
         c = self.collected
@@ -134,13 +143,18 @@ class _Scanner:
         """Scan the methods of ``cls`` and of its base classes in the package (farthest
         first; a method overridden is read where ``super()`` reaches it)."""
         chain = self.resolver.chain(cls)
+        guarded = called_once_under_if(chain)
+        self.read_where_called.update(
+            s for c in chain for s in c.definition.body
+            if isinstance(s, ast.FunctionDef) and s.name in guarded
+        )  # fmt: skip
         for depth, current in reversed(list(enumerate(chain))):
             scope = self.class_scope(chain[depth:])
             nearer = chain[:depth]
             for statement in current.definition.body:
                 if not isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef)):
                     continue
-                if is_helper(statement):
+                if is_helper(statement) or statement in self.read_where_called:
                     continue  # read where it is called
                 if any(defines(c, statement.name) for c in nearer) and not super_called(
                     nearer, statement.name
@@ -153,6 +167,11 @@ class _Scanner:
                 bound: dict[str, Any] = {}
                 if statement.name == "__init__" and built is not None and caller is not None:
                     bound = self.bound_arguments(statement, built, caller, scope)
+                elif statement.name == "__init__" and depth > 0:  # super().__init__(...)
+                    reached = super_init_call(chain[depth - 1])
+                    caller_scope = self.class_scope(chain[depth - 1 :])
+                    if reached is not None:
+                        bound = self.bound_arguments(statement, reached, caller_scope, scope)
                 self.function(statement, scope, context, bound)
 
     def class_scope(self, chain: list[ClassFound]) -> Scope:
@@ -222,6 +241,9 @@ class _Scanner:
             self.expressions(statement.test, statement, scope, context)
             self.walk(statement.body, scope, context)  # declares once, whatever the test
             self.walk(statement.orelse, scope, context)
+        elif isinstance(statement, ast.If) and known_truth(statement.test, scope) is not None:
+            taken = known_truth(statement.test, scope)  # an argument given a bool
+            self.walk(statement.body if taken else statement.orelse, scope, context)
         elif isinstance(statement, ast.If):
             inner = context.changed(
                 condition=context.condition or f"if {unparsed(statement.test)}",
@@ -287,6 +309,8 @@ class _Scanner:
                 loop_prefix=keys.prefix if keys is not None else None,
                 loop_source=keys.source if keys is not None else None,
             )
+            if isinstance(loop.target, ast.Name) and over_own_parameters(loop.iter):
+                inner = inner.changed(own_name=loop.target.id)
             self.walk(loop.body, scope, inner)
         self.walk(loop.orelse, scope, context)
 
@@ -298,7 +322,7 @@ class _Scanner:
         for call, nested in calls_in(root, None):
             inner = context.changed(nested=context.nested or nested)
             self.call(call, statement, scope, inner)
-            if reads_one(call):
+            if reads_one(call) and not _reads_own(call, inner):
                 if parents is None:
                     parents = {c: p for p in ast.walk(root) for c in ast.iter_child_nodes(p)}
                 kind = accessor(call, parents)
@@ -364,7 +388,8 @@ class _Scanner:
             helper in self.stack or not (declares(helper) or is_helper(helper))
         ):
             return
-        if helper is not None and (is_helper(helper) or (module_function and self.in_class)):
+        inlined = helper in self.read_where_called or (module_function and self.in_class)
+        if helper is not None and (is_helper(helper) or inlined):
             source = module_function.module.source if module_function else context.source
             helper_scope = module_function.module.scope() if module_function else scope
             self.inline(helper, call, scope, helper_scope, context.changed(
@@ -485,3 +510,10 @@ class _Scanner:
                 and node.func.attr == BY_PREFIX
             ):
                 self.option(node, context, f"{BY_PREFIX}()")
+
+
+def _reads_own(call: ast.Call, context: Context) -> bool:
+    """A read named by a loop's item over the node's own parameter names: of one it
+    declared already, not a parameter of its own."""
+    name = call.args[0] if call.args else None
+    return isinstance(name, ast.Name) and name.id == context.own_name

@@ -165,3 +165,36 @@ def _assignments(statement: ast.stmt) -> list[tuple[str, ast.expr]]:
         if statement.value is not None:
             return [(statement.target.id, statement.value)]
     return []
+
+
+_READ_CALLS = ("get_parameter", "declare_parameter")
+
+
+def read_call(node: ast.AST, scope: Scope) -> ast.Call | None:
+    """The ``get_parameter`` or ``declare_parameter`` call whose parameter's value ``node``
+    is: ``x.get_parameter('a').value``, ``.get_parameter_value().double_value`` of one, or
+    ``held.value`` where ``held`` (``v`` or ``self.v``) was last given one before."""
+    call: ast.AST | None = None
+    if isinstance(node, ast.Attribute) and node.attr == "value":
+        call = node.value
+        held = dotted_name(call)
+        assigned = last_before(scope.local.get(held, []), node) if held else None
+        if isinstance(assigned, (ast.Assign, ast.AnnAssign)):
+            call = assigned.value
+    elif isinstance(node, ast.Attribute) and node.attr.endswith("_value"):
+        inner = node.value
+        if (
+            isinstance(inner, ast.Call)
+            and isinstance(inner.func, ast.Attribute)
+            and inner.func.attr == "get_parameter_value"
+            and not inner.args
+        ):
+            call = inner.func.value
+    if (
+        isinstance(call, ast.Call)
+        and isinstance(call.func, ast.Attribute)
+        and call.func.attr in _READ_CALLS
+        and call.args
+    ):
+        return call
+    return None

@@ -9,6 +9,7 @@ import ast
 from genparams.rclpy_import.overrides import BY_PREFIX, OVERRIDES
 from genparams.rclpy_import.reads import DECLARE_MANY, DECLARE_ONE
 from genparams.rclpy_import.resolve import ClassFound
+from genparams.rclpy_import.scope import Scope
 
 # Node(...) options and calls that make parameters whose names come from params files.
 OPEN_OPTIONS = ("automatically_declare_parameters_from_overrides", "allow_undeclared_parameters")
@@ -121,3 +122,51 @@ def guards_redeclaring(statement: ast.If) -> bool:
         and isinstance(test.func, ast.Attribute)
         and test.func.attr == "has_parameter"
     )
+
+
+def called_once_under_if(classes: list[ClassFound]) -> set[str]:
+    """The methods the classes call on ``self`` exactly once, and under an ``if``
+    (``if load_params: self.parameter_ros2()``): read where they are called, under its
+    test, rather than as if they always ran."""
+    calls: dict[str, list[ast.Call]] = {}
+    under_if: set[ast.Call] = set()
+    for cls in classes:
+        for node in ast.walk(cls.definition):
+            if (
+                isinstance(node, ast.Call)
+                and isinstance(node.func, ast.Attribute)
+                and isinstance(node.func.value, ast.Name)
+                and node.func.value.id == "self"
+            ):
+                calls.setdefault(node.func.attr, []).append(node)
+            elif isinstance(node, ast.If):
+                for branch in [*node.body, *node.orelse]:
+                    under_if.update(n for n in ast.walk(branch) if isinstance(n, ast.Call))
+    return {name for name, found in calls.items() if len(found) == 1 and found[0] in under_if}
+
+
+def super_init_call(cls: ClassFound) -> ast.Call | None:
+    """The ``super().__init__(...)`` call of the class's constructor, if it has one."""
+    for statement in cls.definition.body:
+        if isinstance(statement, ast.FunctionDef) and statement.name == "__init__":
+            for node in ast.walk(statement):
+                if (
+                    isinstance(node, ast.Call)
+                    and isinstance(node.func, ast.Attribute)
+                    and node.func.attr == "__init__"
+                    and isinstance(node.func.value, ast.Call)
+                    and getattr(node.func.value.func, "id", "") == "super"
+                ):
+                    return node
+    return None
+
+
+def known_truth(test: ast.expr, scope: Scope) -> bool | None:
+    """The truth of ``name`` or ``not name`` where ``name`` is an argument (or a literal
+    loop's item) bound to a bool: ``if load_params:`` under ``super().__init__(name,
+    load_params=False)``; None when it is not known."""
+    negated = isinstance(test, ast.UnaryOp) and isinstance(test.op, ast.Not)
+    name = test.operand if isinstance(test, ast.UnaryOp) and negated else test
+    if not isinstance(name, ast.Name) or not isinstance(scope.loop.get(name.id), bool):
+        return None
+    return scope.loop[name.id] is not negated

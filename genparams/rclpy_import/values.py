@@ -38,6 +38,7 @@ from genparams.rclpy_import.scope import (
     constants,
     dotted_name,
     last_before,
+    read_call,
     unparsed,
 )
 
@@ -66,6 +67,8 @@ _FUNCTIONS: dict[str, Callable[..., Any]] = {
     "math.radians": math.radians,
     "math.degrees": math.degrees,
     "math.sqrt": math.sqrt,
+    "math.floor": math.floor,
+    "math.ceil": math.ceil,
     "abs": abs,
     "min": min,
     "max": max,
@@ -264,9 +267,12 @@ class Evaluator:
             arguments = [self.value(a) for a in node.args]
             if all(_is_number(a) for a in arguments):
                 try:
-                    return computed(*arguments)
+                    result = computed(*arguments)
                 except (ArithmeticError, TypeError, ValueError):
                     pass
+                else:  # numpy rounds to a float (np.floor(2.5) is 2.0), math to an int
+                    numpy = function.startswith(("np.", "numpy.")) and last in ("floor", "ceil")
+                    return float(result) if numpy else result
         if function in ("os.getenv", "getenv") or "environ" in function:
             raise UntranslatableError(node, "a value read from the environment")
         if last in ("get_parameter", "get_parameter_or", "get_parameters"):
@@ -366,26 +372,10 @@ class Evaluator:
         return RangeValue(integer, values["from_value"], values["to_value"], values["step"])
 
     def _parameter_read(self, node: ast.Attribute) -> Any:
-        """``x.get_parameter('n').value`` (or ``.get_parameter_value().double_value``) of a
-        parameter declared before, when the scope offers them: its value."""
-        call: ast.AST = node.value
-        if node.attr != "value":
-            inner = node.value
-            if not (
-                node.attr.endswith("_value")
-                and isinstance(inner, ast.Call)
-                and isinstance(inner.func, ast.Attribute)
-                and inner.func.attr == "get_parameter_value"
-            ):
-                return None
-            call = inner.func.value
-        if not (
-            self.scope.parameters
-            and isinstance(call, ast.Call)
-            and isinstance(call.func, ast.Attribute)
-            and call.func.attr == "get_parameter"
-            and len(call.args) == 1
-        ):
+        """The value of a parameter declared before that ``node`` reads (``read_call``),
+        when the scope offers them."""
+        call = read_call(node, self.scope) if self.scope.parameters else None
+        if call is None:
             return None
         name = self.value(call.args[0])
         if not isinstance(name, str) or name not in self.scope.parameters:

@@ -1,6 +1,9 @@
 """import-rclpy on shapes that were mishandled: a script's ``__main__`` block, a
 declare_parameters list imported in part, a node of which nothing imports, the
-messages of a per-item parameter, names holding ``/``, ``-`` or ``type``."""
+messages of a per-item parameter, names holding ``/``, ``-`` or ``type``, a parameter
+held in a variable (``low = node.declare_parameter(...)``, read as ``low.value``), a
+method called once under an ``if``, an ``if`` on a base constructor's argument, a read of
+every parameter the node has."""
 
 from __future__ import annotations
 
@@ -346,3 +349,165 @@ def test_fields_of_a_mapped_group_sharing_an_attribute_are_left_out_with_the_rea
         "gains.*.p_max: warning: 'p_max' and 'p-max' (of 'gains.*.p-max') of one namespace "
         "would share the Python attribute 'p_max': parameter left out"
     ) in err
+
+
+def test_a_default_read_from_a_parameter_held_in_a_variable_is_kept_with_a_note(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = tmp_path / "winch.py"
+    source.write_text(
+        "from rclpy.node import Node\n\n\n"
+        "class Limits:\n    def __init__(self, node):\n"
+        "        self.steps = node.declare_parameter('reel.steps', 4)\n"
+        "        low = node.declare_parameter('reel.up_min', 0.5)\n"
+        "        self.down = node.declare_parameter('reel.down_min', low.value)\n"
+        "        node.declare_parameter('reel.first', self.steps.value + 1)\n"
+        "        node.declare_parameter('reel.other', low.value * 2)\n\n\n"
+        "class Winch(Node):\n    def __init__(self):\n"
+        "        super().__init__('winch')\n        self.limits = Limits(self)\n",
+        encoding="utf-8",
+    )
+    code, out, err = run(capsys, str(source))
+    reel = yaml.safe_load(out)["parameters"]["reel"]
+    assert code == 0 and "warning" not in err, err
+    assert reel["down_min"] == {"type": "double", "default": 0.5}
+    assert reel["first"] == {"type": "int", "default": 5}
+    assert reel["other"] == {"type": "double", "default": 1.0}
+    assert "reel.down_min: note: a default computed from the parameter(s) 'reel.up_min'" in err
+    assert "reel.first: note: a default computed from the parameter(s) 'reel.steps'" in err
+    assert err.endswith("imported 5 of 5 parameters (3 approximately)\n")
+
+
+def test_a_condition_on_a_parameter_held_in_a_variable_becomes_its_when(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = tmp_path / "pump.py"
+    source.write_text(
+        "from rclpy.node import Node\n\n\n"
+        "class Pump(Node):\n    def __init__(self):\n"
+        "        super().__init__('pump')\n"
+        "        self.mode = self.declare_parameter('mode', 'flow')\n"
+        "        if self.mode.value == 'pressure':\n"
+        "            self.declare_parameter('target_bar', 2.0)\n",
+        encoding="utf-8",
+    )
+    code, out, err = run(capsys, str(source))
+    parameters = yaml.safe_load(out)["parameters"]
+    assert code == 0 and "warning" not in err, err
+    assert parameters["target_bar"] == {
+        "type": "double", "default": 2.0, "when": {"mode": "pressure"}
+    }  # fmt: skip
+
+
+def test_a_truth_test_of_a_bool_parameter_becomes_its_when(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = tmp_path / "arm.py"
+    source.write_text(
+        "from rclpy.node import Node\n\n\n"
+        "class Arm(Node):\n    def __init__(self):\n"
+        "        super().__init__('arm')\n"
+        "        self.declare_parameter('simulated', False)\n"
+        "        self.declare_parameter('joints', 6)\n"
+        "        if self.get_parameter('simulated').value:\n"
+        "            self.declare_parameter('sim_rate', 100.0)\n"
+        "        live = self.get_parameter('simulated')\n"
+        "        if not live.value:\n"
+        "            self.declare_parameter('port', '/dev/arm')\n"
+        "        if self.get_parameter('joints').value:\n"
+        "            self.declare_parameter('wrist', True)\n",
+        encoding="utf-8",
+    )
+    code, out, err = run(capsys, str(source))
+    parameters = yaml.safe_load(out)["parameters"]
+    assert parameters["sim_rate"] == {"type": "double", "default": 100.0,
+                                      "when": {"simulated": True}}  # fmt: skip
+    assert parameters["port"] == {"type": "string", "default": "/dev/arm",
+                                  "when": {"simulated": False}}  # fmt: skip
+    assert "wrist" not in parameters
+    assert (
+        "wrist: warning: declared only under a condition (if self.get_parameter('joints')"
+        ".value): a value compared with 'joints' is not a int (a truth test translates on a "
+        "bool parameter only): parameter left out"
+    ) in err
+    assert code == 1 and err.endswith("imported 4 of 5 parameters; 1 left out (see warnings)\n")
+
+
+def test_a_method_called_once_under_an_if_declares_under_that_if(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source = tmp_path / "dryer.py"
+    source.write_text(
+        "import os\nfrom rclpy.node import Node\n\n\n"
+        "class Dryer(Node):\n    def __init__(self):\n"
+        "        super().__init__('dryer')\n"
+        "        self.declare_parameter('heated', False)\n"
+        "        if self.get_parameter('heated').value:\n"
+        "            self.heater_settings()\n"
+        "        if os.environ.get('DRYER_FAN'):\n"
+        "            self.fan_settings()\n\n"
+        "    def heater_settings(self):\n"
+        "        self.declare_parameter('temperature', 60.0)\n\n"
+        "    def fan_settings(self):\n"
+        "        self.declare_parameter('fan_speed', 3)\n",
+        encoding="utf-8",
+    )
+    code, out, err = run(capsys, str(source))
+    parameters = yaml.safe_load(out)["parameters"]
+    assert parameters["temperature"] == {"type": "double", "default": 60.0,
+                                         "when": {"heated": True}}  # fmt: skip
+    assert "fan_speed" not in parameters
+    assert (
+        "fan_speed: warning: declared only under a condition (if os.environ.get('DRYER_FAN'))"
+    ) in err
+    assert code == 1 and err.endswith("imported 2 of 3 parameters; 1 left out (see warnings)\n")
+
+
+@pytest.mark.parametrize(("given", "declared"), [("", True), (", False", False),
+                                                 (", with_fan=True", True)])  # fmt: skip
+def test_a_base_constructor_s_if_on_its_argument_follows_what_super_gives_it(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], given: str, declared: bool
+) -> None:
+    source = tmp_path / "oven.py"
+    source.write_text(
+        "from rclpy.node import Node\n\n\n"
+        "class Appliance(Node):\n    def __init__(self, name, with_fan=True):\n"
+        "        super().__init__(name)\n        if with_fan:\n"
+        "            self.fan()\n        if not with_fan:\n"
+        "            self.declare_parameter('vent_open', True)\n\n"
+        "    def fan(self):\n        self.declare_parameter('fan_speed', 2)\n\n\n"
+        "class Oven(Appliance):\n    def __init__(self):\n"
+        f"        super().__init__('oven'{given})\n"
+        "        self.declare_parameter('temperature', 180.0)\n",
+        encoding="utf-8",
+    )
+    code, out, err = run(capsys, str(source), "--class", "Oven")
+    parameters = yaml.safe_load(out)["parameters"]
+    assert code == 0 and "warning" not in err, err
+    assert ("fan_speed" in parameters) is declared
+    assert ("vent_open" in parameters) is not declared
+
+
+@pytest.mark.parametrize(
+    "names",
+    ["sorted(self._parameters.keys())", "self._parameters", "list(self._parameter_overrides)"],
+)
+def test_reading_every_parameter_the_node_has_declares_nothing_more(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], names: str
+) -> None:
+    node = tmp_path / "mixer.py"
+    node.write_text(
+        "from rclpy.node import Node\n\n\nclass Mixer(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('mixer', automatically_declare_parameters_from_overrides=True)\n"
+        "        self.settings = {}\n"
+        f"        for name in {names}:\n"
+        "            self.settings[name] = self.get_parameter(name).value\n",
+        encoding="utf-8",
+    )
+    params = tmp_path / "mixer.yaml"
+    params.write_text("mixer:\n  ros__parameters:\n    bowl: {speed: 3}\n", encoding="utf-8")
+    code, out, err = run(capsys, str(node), "--params-file", str(params))
+    assert code == 0 and "warning" not in err, err
+    assert yaml.safe_load(out)["parameters"] == {"bowl": {"speed": {"type": "int", "default": 3}}}
+    assert err.endswith("imported 1 of 1 parameters\n")

@@ -88,8 +88,8 @@ def test_rows_and_totals_of_a_node_checked_on_real_nodes(
     # file by file: the constant from limits.py is not in the file alone
     assert cells[4] == "3 of 4"
     # whole: port, rate, sensors and {sensor}.scale; all four exact on a real node, which
-    # declares front.scale as the params file names one sensor
-    assert cells[5:9] == ["4", "4", "0", "0"]
-    assert cells[9] == "4 declared"
+    # declares front.scale as the params file names one sensor: each checked there
+    assert cells[5:10] == ["4", "4", "4", "0", "0"]
+    assert cells[10] == "4 declared"
     assert "declared by the node's own run only: rate" in out  # the file alone lacks it
     assert "crashes: 0" in out

@@ -217,6 +217,9 @@ def test_the_static_evaluator_reads_a_module_s_constants() -> None:
         return evaluate_constant(ast.parse(text, mode="eval").body, module)
 
     assert value("[HALF, np.pi / 2, f'{NAME}_link']") == [5.0, 1.5707963267948966, "cam_link"]
+    # numpy rounds to a float, which rclpy declares a double; math to an int
+    rounded = value("[np.floor(HALF / 2), numpy.ceil(2.1), math.floor(HALF / 2)]")
+    assert rounded == [2.0, 3.0, 2] and [type(r) for r in rounded] == [float, float, int]
     path = value("os.path.join(get_package_share_directory(NAME), 'config', 'a.yaml')")
     assert isinstance(path, SharePath) and path == "$(find-pkg-share cam)/config/a.yaml"
     with pytest.raises(UntranslatableError, match="the variable 'missing'"):
@@ -272,3 +275,34 @@ def test_a_file_of_the_package_that_cannot_be_parsed_is_named(
     assert code == 1
     assert "note: files of the package not read" in err
     assert "pkg/broken.py: cannot be read (SyntaxError)" in err
+
+
+@pytest.mark.parametrize("marker", ["setup.cfg", None])
+def test_a_package_marked_by_setup_cfg_or_by_its_init_files_is_followed(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], marker: str | None
+) -> None:
+    """Its root is the folder holding setup.cfg, or above its last ``__init__.py``; the
+    node's base class in a subpackage declares when its constructor is told to."""
+    _write(tmp_path, {
+        "sorter/sorter/__init__.py": "",
+        "sorter/sorter/common/__init__.py": "",
+        "sorter/sorter/common/base.py": (
+            "from rclpy.node import Node\n\n\nclass Station(Node):\n"
+            "    def __init__(self, name, with_limits=True):\n"
+            "        super().__init__(name)\n        if with_limits:\n"
+            "            self.limits()\n\n    def limits(self):\n"
+            "        self.declare_parameter('belt_speed', 0.4)\n"
+        ),
+        "sorter/sorter/sorter_node.py": (
+            "from .common.base import Station\n\n\nclass Sorter(Station):\n"
+            "    def __init__(self):\n        super().__init__('sorter', with_limits=True)\n"
+        ),
+        **({f"sorter/{marker}": "[metadata]\nname = sorter\n"} if marker else {}),
+    })  # fmt: skip
+    code = main(["import-rclpy", str(tmp_path / "sorter" / "sorter" / "sorter_node.py")])
+    captured = capsys.readouterr()
+    assert code == 0, captured.err
+    assert yaml.safe_load(captured.out)["parameters"] == {
+        "belt_speed": {"type": "double", "default": 0.4}
+    }
+    assert "never run: sorter/common/base.py" in captured.err
