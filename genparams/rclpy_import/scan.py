@@ -15,6 +15,7 @@ import ast
 from dataclasses import dataclass, field, replace
 from typing import Any
 
+from genparams.rclpy_import.arguments import bound_arguments, class_scope
 from genparams.rclpy_import.declarations import Context, declare_many, declare_one, read
 from genparams.rclpy_import.found import Found, NodeOption, Unit
 from genparams.rclpy_import.overrides import (
@@ -149,7 +150,7 @@ class _Scanner:
             if isinstance(s, ast.FunctionDef) and s.name in guarded
         )  # fmt: skip
         for depth, current in reversed(list(enumerate(chain))):
-            scope = self.class_scope(chain[depth:])
+            scope = class_scope(chain[depth:])
             nearer = chain[:depth]
             for statement in current.definition.body:
                 if not isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef)):
@@ -166,32 +167,17 @@ class _Scanner:
                 context = Context(current.module.source, via=inner_via, call_site=site)
                 bound: dict[str, Any] = {}
                 if statement.name == "__init__" and built is not None and caller is not None:
-                    bound = self.bound_arguments(statement, built, caller, scope)
+                    bound = bound_arguments(
+                        statement, built, caller, scope, self.collected.defaults
+                    )
                 elif statement.name == "__init__" and depth > 0:  # super().__init__(...)
                     reached = super_init_call(chain[depth - 1])
-                    caller_scope = self.class_scope(chain[depth - 1 :])
+                    caller_scope = class_scope(chain[depth - 1 :])
                     if reached is not None:
-                        bound = self.bound_arguments(statement, reached, caller_scope, scope)
+                        bound = bound_arguments(
+                            statement, reached, caller_scope, scope, self.collected.defaults
+                        )
                 self.function(statement, scope, context, bound)
-
-    def class_scope(self, chain: list[ClassFound]) -> Scope:
-        """Names in a class's methods: its module's, and its (and its bases') attributes
-        and methods, the nearest class winning."""
-        module = chain[0].module
-        constants: dict[str, Any] = {}
-        functions: dict[str, ast.FunctionDef] = {}
-        for cls in reversed(chain):
-            constants.update(cls.module.class_constants(cls.definition))
-            for statement in cls.definition.body:
-                if isinstance(statement, ast.FunctionDef):
-                    functions[f"self.{statement.name}"] = statement
-        scope = module.scope()
-        return replace(
-            scope,
-            class_name=chain[0].definition.name,
-            class_constants=constants,
-            functions={**scope.functions, **functions},
-        )
 
     def function(
         self,
@@ -423,7 +409,7 @@ class _Scanner:
     ) -> None:
         """Read ``helper``'s body with its arguments bound to the call's values."""
         reads: list[str] = []
-        bound = self.bound_arguments(helper, call, caller, scope, reads)
+        bound = bound_arguments(helper, call, caller, scope, self.collected.defaults, reads)
         if reads:
             context = context.changed(reads=tuple(dict.fromkeys([*context.reads, *reads])))
         inner = replace(scope, loop={}, local=locals_of(helper))
@@ -446,7 +432,7 @@ class _Scanner:
         if function in self.stack:
             return
         reads: list[str] = []
-        bound = self.bound_arguments(function, call, scope, scope, reads)
+        bound = bound_arguments(function, call, scope, scope, self.collected.defaults, reads)
         if reads:
             context = context.changed(reads=tuple(dict.fromkeys([*context.reads, *reads])))
         own = set(bound) | {a.arg for a in function.args.args}
@@ -459,43 +445,6 @@ class _Scanner:
             self.walk(function.body, inner, context)
         finally:
             self.stack.pop()
-
-    def bound_arguments(
-        self,
-        function: ast.FunctionDef | ast.AsyncFunctionDef,
-        call: ast.Call,
-        caller: Scope,
-        scope: Scope,
-        reads: list[str] | None = None,
-    ) -> dict[str, Any]:
-        """The values ``call`` gives ``function``'s arguments (or their defaults), as far
-        as they can be read; a method's or constructor's ``self`` takes none."""
-        names = [a.arg for a in function.args.args]
-        if (
-            names
-            and names[0] == "self"
-            and (isinstance(call.func, ast.Attribute) or function.name == "__init__")
-        ):
-            names = names[1:]
-        bound: dict[str, Any] = {}
-        defaults = function.args.defaults
-        for name, default in zip(names[len(names) - len(defaults) :], defaults, strict=False):
-            try:
-                bound[name] = Evaluator(scope).value(default)
-            except UntranslatableError:
-                pass
-        arguments: list[tuple[str, ast.expr]] = list(zip(names, call.args, strict=False))
-        arguments += [(k.arg, k.value) for k in call.keywords if k.arg is not None]
-        known = replace(caller, parameters=dict(self.collected.defaults))
-        for name, argument in arguments:
-            evaluator = Evaluator(known)
-            try:
-                bound[name] = evaluator.value(argument)
-            except UntranslatableError:
-                bound.pop(name, None)
-            if reads is not None:
-                reads.extend(evaluator.parameters_read)
-        return bound
 
     def reads_of_overrides(self, root: ast.AST, context: Context, calls: bool = True) -> None:
         """``self._parameter_overrides`` (and, with ``calls``, by-prefix calls) under
