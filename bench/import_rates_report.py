@@ -16,7 +16,7 @@ HEADER = (
 
 
 def _share(part: int, whole: int) -> str:
-    return f"{part} of {whole} ({100 * part / whole:.0f}%)" if whole else "0 of 0"
+    return f"{part} of {whole} ({100 * part / whole:.1f}%)" if whole else "0 of 0"
 
 
 def _node_run(row: Row) -> str:
