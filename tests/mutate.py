@@ -5,7 +5,7 @@
     python -m tests.mutate quick MODULE ...     # unchecked mutants, the same way
     python -m tests.mutate report               # score per module, survivors not accepted
     python -m tests.mutate survivors [MODULE ...]  # the survivors still to kill or explain
-    python -m tests.mutate baseline             # record the killed mutants for `sample`
+    python -m tests.mutate baseline [MODULE ...]  # record the killed mutants for `sample`
     python -m tests.mutate sample [N [SEED]]    # N recorded kills run afresh; fail on a survivor
     python -m tests.mutate try NAME TEST ...    # do these tests kill this mutant?
     python -m tests.mutate typecheck mypy       # (mutmut's type_check_command, in mutants/)
@@ -482,19 +482,66 @@ def survivors(modules: list[str]) -> int:
     return 0
 
 
-def baseline() -> int:
-    """Record every mutant a test killed: its function's hash and the test (see ``sample``)."""
-    hashes = function_hashes()
-    tests = killers()
-    killed = sorted(
-        name
-        for module in all_modules()
-        for name, code in results(module).items()
-        if status(code) == "killed" and name in hashes and name in tests
-    )
-    lines = "".join(f"{name} {hashes[name]} {tests[name]}\n" for name in killed)
+# A recorded kill: the hash of its mutant's function as mutmut saw it, and the test that
+# failed first under it.
+Record = tuple[str, str]
+
+
+def read_records(text: str) -> dict[str, Record]:
+    """Mutant name -> its record, from the text of tests/mutation_killed.txt."""
+    records = {}
+    for line in text.splitlines():
+        name, function_hash, test = [*line.split(" ", 2), "", ""][:3]
+        if name and not name.startswith("#") and test:
+            records[name] = (function_hash, test)
+    return records
+
+
+def rerecorded(
+    old: dict[str, Record],
+    codes: dict[str, int | None],
+    hashes: dict[str, str],
+    tests: dict[str, str],
+) -> dict[str, Record]:
+    """The records of the mutants in ``codes`` (a module's results in mutants/).
+
+    A mutant a test killed is recorded afresh. One not yet checked keeps its old
+    record while its function is unchanged, so a run stopped part way loses nothing
+    still valid; any other old record (a survivor now, or of a changed function) goes.
+    """
+    records = {}
+    for name, code in codes.items():
+        if status(code) == "killed" and name in hashes and name in tests:
+            records[name] = (hashes[name], tests[name])
+        elif code is None and name in old and old[name][0] == hashes.get(name):
+            records[name] = old[name]
+    return records
+
+
+def baseline(modules: Sequence[str] = ()) -> int:
+    """Record the mutants a test killed: their function's hash and the test (see ``sample``).
+
+    Without ``modules`` every record is written afresh from mutants/. With them only
+    those modules' records are: the records of every other module stay as they are, so
+    a run over a few modules can be recorded without a run over all of them.
+    """
+    known = all_modules()
+    unknown = [module for module in modules if module not in known]
+    if unknown:
+        print(f"not a mutated module: {' '.join(unknown)}", file=sys.stderr)
+        return 2
+    chosen = list(modules) or known
+    old = read_records(KILLED.read_text(encoding="utf-8")) if KILLED.exists() else {}
+    hashes, tests = function_hashes(), killers()
+    records = {}
+    if modules:
+        mine = tuple(module + "." for module in chosen)
+        records = {name: record for name, record in old.items() if not name.startswith(mine)}
+    for module in chosen:
+        records |= rerecorded(old, results(module), hashes, tests)
+    lines = "".join(f"{name} {h} {test}\n" for name, (h, test) in sorted(records.items()))
     KILLED.write_text(HEADER + lines, encoding="utf-8")
-    print(f"{len(killed)} killed mutants recorded in {KILLED.relative_to(ROOT)}")
+    print(f"{len(records)} killed mutants recorded in {KILLED.relative_to(ROOT)}")
     return 0
 
 
@@ -609,11 +656,10 @@ def sample(size: int, seed: int) -> int:
     baseline are drawn: mutmut numbers the mutants of a changed function anew, so the
     same name may be another change. A test since renamed or removed is skipped.
     """
-    recorded = {}
-    for line in KILLED.read_text(encoding="utf-8").splitlines():
-        name, function_hash, test = [*line.split(" ", 2), "", ""][:3]
-        if name and not name.startswith("#") and test:
-            recorded[name] = (function_hash, runnable(test))
+    recorded = {
+        name: (function_hash, runnable(test))
+        for name, (function_hash, test) in read_records(KILLED.read_text("utf-8")).items()
+    }
     if not recorded:
         print(f"{KILLED.name} records no kills with their test: run `make mutate`, then baseline")
         return 1  # nothing could be drawn: a green run here would check nothing
@@ -656,7 +702,7 @@ def main(argv: list[str]) -> int:
     if command == "report":
         return report()
     if command == "baseline":
-        return baseline()
+        return baseline(rest)
     if command == "typecheck":
         return typecheck()
     if command == "survivors":

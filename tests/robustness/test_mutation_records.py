@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from tests.mutate import function_of, runnable, sibling_tests
+from tests.mutate import function_of, read_records, rerecorded, runnable, sibling_tests
 
 
 def test_an_id_cut_inside_its_parameters_stands_for_its_function() -> None:
@@ -27,3 +27,32 @@ def test_siblings_are_the_other_tests_of_the_same_function() -> None:
     }
     assert sibling_tests("m.x_f__mutmut_1", recorded) == ["tests/a.py::test_two"]
     assert sibling_tests("m.x_f2__mutmut_1", recorded) == []
+
+
+def test_records_are_read_with_their_hash_and_test() -> None:
+    text = "# header\nm.x_f__mutmut_1 h1 tests/a.py::test_x[a b]\nm.x_f__mutmut_2 h1\n\n"
+    assert read_records(text) == {"m.x_f__mutmut_1": ("h1", "tests/a.py::test_x[a b]")}
+
+
+def test_a_module_recorded_again_keeps_only_what_still_holds() -> None:
+    old = {
+        "m.x_f__mutmut_1": ("old", "tests/a.py::test_one"),  # f changed: renumbered
+        "m.x_g__mutmut_1": ("g", "tests/a.py::test_g"),  # not checked yet, g unchanged
+        "m.x_h__mutmut_1": ("old", "tests/a.py::test_h"),  # not checked yet, h changed
+        "m.x_g__mutmut_2": ("g", "tests/a.py::test_g"),  # survives now
+        "m.x_gone__mutmut_1": ("x", "tests/a.py::test_gone"),  # its function went
+    }
+    codes = {
+        "m.x_f__mutmut_1": 1,
+        "m.x_f__mutmut_2": 1,  # killed, but no test recorded as failing first
+        "m.x_g__mutmut_1": None,
+        "m.x_g__mutmut_2": 0,
+        "m.x_h__mutmut_1": None,
+        "m.x_h__mutmut_2": 37,  # refused by mypy: not a kill a test can repeat
+    }
+    hashes = {name: name.split("_")[1] for name in codes}
+    tests = {"m.x_f__mutmut_1": "tests/a.py::test_new", "m.x_h__mutmut_2": "tests/a.py::t"}
+    assert rerecorded(old, codes, hashes, tests) == {
+        "m.x_f__mutmut_1": ("f", "tests/a.py::test_new"),
+        "m.x_g__mutmut_1": ("g", "tests/a.py::test_g"),
+    }
