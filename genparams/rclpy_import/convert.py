@@ -39,7 +39,7 @@ from genparams.rclpy_import.placing import (
     key_list,
     written_name,
 )
-from genparams.rclpy_import.scope import SharePath, unparsed
+from genparams.rclpy_import.scope import SharePath, run_time_problem, unparsed
 from genparams.schema.errors import Location, SchemaProblem
 
 
@@ -281,8 +281,8 @@ class _Converter:
             self.warn(at, "", f"the name {name!r} is not a string: parameter left out")
             return None
         if found.runtime_loop is None:
-            what = found.name.problem.what
-            self.warn(at, "", f"a name computed at run time ({what}): parameter left out")
+            what = run_time_problem(found.name.problem, "a name")
+            self.warn(at, "", f"{what}: parameter left out")
             return None
         place, reason = self.schema.per_item(found)
         if place is None:
@@ -308,8 +308,8 @@ class _Converter:
                 return None
         from_item = place is not None and place.tail and _computed_from_item(found)
         if found.value.problem is not None and not from_item:
-            self.warn(at, shown, f"value computed at run time ({found.value.problem.what}): "
-                      "parameter left out")  # fmt: skip
+            what = run_time_problem(found.value.problem, "value")
+            self.warn(at, shown, f"{what}: parameter left out")
             return None
         if place is not None and place.tail:
             problem = self.schema.entry_problem(place, key_list(found))

@@ -45,12 +45,14 @@ class ModuleView:
     namespaces: dict[str, dict[str, Binding]] = field(default_factory=dict)
     classes: dict[str, ClassFound] = field(default_factory=dict)
     functions: dict[str, FunctionFound] = field(default_factory=dict)
+    outside: dict[str, str] = field(default_factory=dict)  # names from modules not read
 
     def scope(self) -> Scope:
         return Scope(
             module_constants=self.constants,
             namespaces=self.namespaces,
             functions={n: f.definition for n, f in self.functions.items()},
+            outside=self.outside,
         )
 
     def class_constants(self, cls: ast.ClassDef) -> dict[str, Binding]:
@@ -116,9 +118,8 @@ class Resolver:
 
     def _import_from(self, view: ModuleView, statement: ast.ImportFrom, depth: int) -> None:
         target = self.package.resolve(view.path, statement.module, statement.level)
-        if target is None:
-            return
-        other = self._view(target, depth + 1)
+        other = self._view(target, depth + 1) if target is not None else None
+        origin = "." * statement.level + (statement.module or "")
         for alias in statement.names:
             local = alias.asname or alias.name
             if alias.name == "*" and other is not None:
@@ -126,10 +127,12 @@ class Resolver:
                 continue
             if other is not None and _take(view, local, other, alias.name):
                 continue
-            sub = self.package.submodule(target, alias.name)
+            sub = self.package.submodule(target, alias.name) if target is not None else None
             inner = self._view(sub, depth + 1) if sub is not None else None
             if inner is not None:
                 _namespace(view, local, inner)
+            elif alias.name != "*":
+                view.outside[local] = origin
 
     def _import(self, view: ModuleView, statement: ast.Import, depth: int) -> None:
         for alias in statement.names:
@@ -137,6 +140,9 @@ class Resolver:
             other = self._view(target, depth + 1) if target is not None else None
             if other is not None:
                 _namespace(view, alias.asname or alias.name, other)
+            else:
+                local = alias.asname or alias.name.partition(".")[0]
+                view.outside[local] = alias.name if alias.asname else local
 
 
 def module_level(body: list[ast.stmt]) -> Iterator[ast.stmt]:

@@ -28,6 +28,7 @@ from genparams.rclpy_import.scope import (
     Binding,
     DescriptorValue,
     Elsewhere,
+    NotReadError,
     RangeValue,
     Scope,
     SharePath,
@@ -167,6 +168,8 @@ class Evaluator:
             return self._assigned(assigned, node)
         if node.id in scope.module_constants:
             return self.bound(scope.module_constants[node.id])
+        if node.id in scope.outside:
+            raise NotReadError(node, node.id, scope.outside[node.id])
         raise UntranslatableError(node, f"the variable {node.id!r}")
 
     def _assigned(self, statement: ast.stmt, use: ast.Name) -> Any:
@@ -231,6 +234,8 @@ class Evaluator:
                     return self.value(assigned.value)
             if head == "self":
                 raise UntranslatableError(node, f"the attribute {name!r}")
+            if head in self.scope.outside:
+                raise NotReadError(node, name, self.scope.outside[head])
         raise UntranslatableError(node, f"the expression {unparsed(node)!r}")
 
     def _call(self, node: ast.Call) -> Any:
