@@ -247,6 +247,11 @@ class _Converter:
             exact = False
         if found.via is not None:
             self.note(at, shown, f"declared by {found.via}")
+        if found.late is not None:
+            self.note(at, shown, f"declared when {found.late} runs, which no file read calls "
+                      "(a callback, or a method called from outside): the schema declares it "
+                      "with the others")  # fmt: skip
+            exact = False
         return exact
 
     def declaration(self, found: Found) -> Fate:

@@ -38,6 +38,7 @@ class Context:
     # The variable of a loop over the node's own parameter names (``for name in
     # self._parameters``): a read of it reads a parameter declared already.
     own_name: str | None = None
+    late: str | None = None  # the method, when nothing read calls it
 
     def changed(self, **changes: Any) -> Context:
         return replace(self, **changes)
@@ -147,6 +148,7 @@ def _found(
         loop_prefix=context.loop_prefix,
         loop_source=context.loop_source,
         via=context.via,
+        late=context.late,
         **more,
     )
     if context.reads and found.value.problem is None:

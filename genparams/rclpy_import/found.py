@@ -82,6 +82,9 @@ class Found:
     # an object the node builds ("the helper self.get_param at node.py:12:9"); the patch
     # leaves it as written.
     via: str | None = None
+    # Declared by a method that nothing read calls (a callback, or one called from outside
+    # the files read, ``driver.get_frame_id()``): rclpy declares it when that runs.
+    late: str | None = None
 
     @property
     def receiver_is_self(self) -> bool:

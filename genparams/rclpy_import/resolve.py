@@ -67,9 +67,25 @@ class Resolver:
     def __init__(self, package: Package) -> None:
         self.package = package
         self._views: dict[Path, ModuleView | None] = {}
+        self._called: tuple[int, frozenset[str]] | None = None  # (modules read, names)
+
+    def methods_called(self) -> frozenset[str]:
+        """The names called as ``x.name(...)`` in the modules read so far."""
+        if self._called is None or self._called[0] != len(self._views):
+            trees = [v.tree for v in self._views.values() if v is not None]
+            names = {
+                node.func.attr
+                for tree in trees
+                for node in ast.walk(tree)
+                if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
+            }
+            self._called = (len(self._views), frozenset(names))
+        return self._called[1]
 
     def node_view(self, path: Path, tree: ast.Module, source: SourceFile) -> ModuleView:
-        return self._build(path.resolve(), tree, source, 0)
+        view = self._build(path.resolve(), tree, source, 0)
+        self._views.setdefault(path.resolve(), view)
+        return view
 
     def chain(self, cls: ClassFound) -> list[ClassFound]:
         """The class and its base classes found in the package, nearest first."""

@@ -60,6 +60,11 @@ AFTERWARDS = {
     "set_descriptor": "set_descriptor() changes a descriptor after its declaration",
     "undeclare_parameter": "undeclare_parameter() removes a parameter after its declaration",
 }
+# What rclpy's lifecycle node calls on each transition: a declaration there is made when
+# the node is configured, as a lifecycle node declares its class.
+LIFECYCLE_CALLBACKS = frozenset(
+    {"on_configure", "on_activate", "on_deactivate", "on_cleanup", "on_shutdown", "on_error"}
+)
 _MAX_FOLLOWED = 6  # helpers and objects followed inside one another
 
 
@@ -164,7 +169,12 @@ class _Scanner:
                 inner_via = via
                 if depth > 0 and via is None:
                     inner_via = f"the base class {current.definition.name}"
-                context = Context(current.module.source, via=inner_via, call_site=site)
+                context = Context(
+                    current.module.source,
+                    via=inner_via,
+                    call_site=site,
+                    late=self.late(statement),
+                )
                 bound: dict[str, Any] = {}
                 if statement.name == "__init__" and built is not None and caller is not None:
                     bound = bound_arguments(
@@ -178,6 +188,16 @@ class _Scanner:
                             statement, reached, caller_scope, scope, self.collected.defaults
                         )
                 self.function(statement, scope, context, bound)
+
+    def late(self, method: ast.FunctionDef | ast.AsyncFunctionDef) -> str | None:
+        """``name()`` for a method that nothing read calls (``get_frame_id``, called by
+        scripts outside the files read; a callback handed to a timer); None for the
+        constructor, one that is called, a decorated one (a property) and rclpy's
+        lifecycle callbacks."""
+        name = method.name
+        if name.startswith("__") or name in LIFECYCLE_CALLBACKS or method.decorator_list:
+            return None
+        return None if name in self.resolver.methods_called() else f"{name}()"
 
     def function(
         self,
