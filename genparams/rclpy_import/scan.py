@@ -52,6 +52,7 @@ from genparams.rclpy_import.shapes import (
     known_truth,
     super_called,
     super_init_call,
+    uncalled,
 )
 from genparams.rclpy_import.values import Evaluator
 
@@ -60,11 +61,6 @@ AFTERWARDS = {
     "set_descriptor": "set_descriptor() changes a descriptor after its declaration",
     "undeclare_parameter": "undeclare_parameter() removes a parameter after its declaration",
 }
-# What rclpy's lifecycle node calls on each transition: a declaration there is made when
-# the node is configured, as a lifecycle node declares its class.
-LIFECYCLE_CALLBACKS = frozenset(
-    {"on_configure", "on_activate", "on_deactivate", "on_cleanup", "on_shutdown", "on_error"}
-)
 _MAX_FOLLOWED = 6  # helpers and objects followed inside one another
 
 
@@ -173,7 +169,7 @@ class _Scanner:
                     current.module.source,
                     via=inner_via,
                     call_site=site,
-                    late=self.late(statement),
+                    late=uncalled(statement, self.resolver.methods_called()),
                 )
                 bound: dict[str, Any] = {}
                 if statement.name == "__init__" and built is not None and caller is not None:
@@ -188,16 +184,6 @@ class _Scanner:
                             statement, reached, caller_scope, scope, self.collected.defaults
                         )
                 self.function(statement, scope, context, bound)
-
-    def late(self, method: ast.FunctionDef | ast.AsyncFunctionDef) -> str | None:
-        """``name()`` for a method that nothing read calls (``get_frame_id``, called by
-        scripts outside the files read; a callback handed to a timer); None for the
-        constructor, one that is called, a decorated one (a property) and rclpy's
-        lifecycle callbacks."""
-        name = method.name
-        if name.startswith("__") or name in LIFECYCLE_CALLBACKS or method.decorator_list:
-            return None
-        return None if name in self.resolver.methods_called() else f"{name}()"
 
     def function(
         self,
