@@ -6,6 +6,7 @@ The schema is the golden case tests/cases/conditional.
 
 from __future__ import annotations
 
+import pickle
 import types
 from typing import Any
 
@@ -15,7 +16,7 @@ from rclpy.parameter import Parameter
 
 from genparams.audit.findings import VIOLATION
 from genparams.live.graph import Graph
-from genparams.runtime import ParameterDeclarationError
+from genparams.runtime import NoneOf, ParameterDeclarationError, ParamSpec
 from tests.golden import CASES
 from tests.patience import WAIT_S
 from tests.runtime.served_node import audit_served, first_read, served
@@ -135,3 +136,12 @@ def test_tune_and_audit(module: types.ModuleType) -> None:
     assert "lease_rate" not in read and "device" not in read  # mode is expert: neither
     assert target in result.audited
     assert [f.text() for f in result.findings if f.kind == VIOLATION] == []
+
+
+def test_negated_conditions_in_words_and_across_processes() -> None:
+    spec = ParamSpec("port", "string", default="a", when=(("link", NoneOf("sim", "udp", "can")),))
+    assert spec.condition_text == "declared only when link is none of 'sim', 'udp' or 'can'"
+    assert not spec.declared_with({"link": "udp"}) and spec.declared_with({"link": "serial"})
+    copy = pickle.loads(pickle.dumps(spec))  # a record pickles by value
+    assert copy == spec and copy.when[0][1] == NoneOf("sim", "udp", "can")
+    assert not copy.declared_with({"link": "can"})
