@@ -9,7 +9,8 @@ A declaration by type only is ``optional``; ``dynamic_typing`` (or a name alone)
 is ``type: any``; one in a loop over a string_array parameter's value, named by the
 item, is a ``for_each`` leaf, and one named by the item and more
 (``f"gains.{joint}.p"``) a parameter of a mapped group keyed by that list; one under
-``if <parameter> == <literal>`` (or ``in``) has a ``when``. A node that declares what its
+``if <parameter> == <literal>`` (or ``in``, ``!=``, ``not in``, a bool's truth) has a
+``when``, and one in its ``else`` the negated ``when``. A node that declares what its
 params file names takes the parameters of the file's section (overrides_in.py).
 """
 

@@ -12,6 +12,7 @@ from genparams.rclpy_import.found import Found, Piece, SourceFile
 from genparams.rclpy_import.item_names import folded
 from genparams.rclpy_import.scope import Scope, UntranslatableError, unparsed
 from genparams.rclpy_import.values import Evaluator
+from genparams.runtime.core.conditions import KeyTest
 from genparams.schema.errors import Location
 
 SAMPLE_ITEM = "item"  # a loop's item, to type a value computed from it
@@ -29,7 +30,7 @@ class Context:
     literal_loop: ast.For | None = None
     loop_parameter: str | None = None
     loop_variable: str | None = None
-    when: tuple[str, tuple[Any, ...]] | None = None
+    when: tuple[str, KeyTest] | None = None
     loop_prefix: str | None = None
     loop_source: ast.AST | None = None
     via: str | None = None  # the helper, base class or object declaring for the node

@@ -29,6 +29,7 @@ from genparams.rclpy_import.reads import (
     DECLARE_ONE,
     accessor,
     bind,
+    branch_condition,
     calls_in,
     condition_on,
     is_main_guard,
@@ -55,6 +56,7 @@ from genparams.rclpy_import.shapes import (
     uncalled,
 )
 from genparams.rclpy_import.values import Evaluator
+from genparams.runtime.core.conditions import negated
 
 # Calls that change declared parameters after the fact: the schema cannot follow them.
 AFTERWARDS = {
@@ -237,13 +239,16 @@ class _Scanner:
             taken = known_truth(statement.test, scope)  # an argument given a bool
             self.walk(statement.body if taken else statement.orelse, scope, context)
         elif isinstance(statement, ast.If):
+            tested = condition_on(statement.test, scope)
             inner = context.changed(
                 condition=context.condition or f"if {unparsed(statement.test)}",
-                when=condition_on(statement.test, scope) if context.condition is None else None,
+                when=branch_condition(context.condition, context.when, tested),
             )
+            otherwise = tested and (tested[0], negated(tested[1]))
+            otherwise = branch_condition(context.condition, context.when, otherwise)
             self.expressions(statement.test, statement, scope, context)
             self.walk(statement.body, scope, inner)
-            self.walk(statement.orelse, scope, inner.changed(when=None))
+            self.walk(statement.orelse, scope, inner.changed(when=otherwise))
         elif isinstance(statement, (ast.Try, ast.TryStar)):
             self.walk(statement.body, scope, context)
             for handler in statement.handlers:
