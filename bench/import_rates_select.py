@@ -188,7 +188,7 @@ def _script(path: str, text: bytes) -> Candidate | None:
     if not builds:
         return None
     builds.sort(key=lambda call: (call.lineno, call.col_offset))
-    return Candidate(path, "", (), frozenset(PARAMETER_CALLS), frozenset(), _literal_name(builds))
+    return Candidate(path, "", (), frozenset(), frozenset(), _literal_name(builds))
 
 
 def _bound_nodes(part: ast.stmt, builders: set[str], modules: set[str]) -> dict[str, ast.Call]:
