@@ -118,9 +118,8 @@ class FlowReader(ValueReader):
         elif isinstance(statement, ast.Continue):
             raise _ContinueError
         elif not isinstance(statement, ast.Import | ast.ImportFrom | ast.Pass | ast.Expr):
-            self.scope.unknown(
-                f"what the statement {ast.unparse(statement)[:50]!r} adds", self.where(statement)
-            )
+            first = ast.unparse(statement).splitlines()[0]
+            self.undecided(statement, f"what the statement {first[:50]!r} adds")
 
     def bind(self, target: ast.expr, found: Value, statement: ast.AST) -> None:
         if isinstance(target, ast.Name):
@@ -203,11 +202,12 @@ class FlowReader(ValueReader):
                 continue
         self.block(statement.orelse)
 
-    def undecided(self, statement: ast.If | ast.For, what: str) -> None:
-        """A test or loop only launch decides: its body is not followed, the variables it
-        sets are unknown from here, and a ``return`` under it leaves its function unknown."""
+    def undecided(self, statement: ast.stmt, what: str) -> None:
+        """A test, loop or statement only launch decides: its body is not followed, the
+        variables it sets are unknown from here, and a ``return`` under it leaves its
+        function unknown."""
         unknown = self.scope.unknown(what, self.where(statement))
-        inner = [*statement.body, *statement.orelse]
+        inner = [s for part in _bodies(statement) for s in part]
         for node in [statement, *_walk(inner)]:
             for target in _targets(node):
                 for name in _names(target):
@@ -215,7 +215,7 @@ class FlowReader(ValueReader):
                         self.variables[name] = unknown
                 if isinstance(target, ast.Subscript) and isinstance(target.value, ast.Name):
                     self.variables[target.value.id] = unknown
-        if _leaves(inner, loop=isinstance(statement, ast.For)):
+        if _leaves(inner, loop=isinstance(statement, ast.For | ast.While)):
             raise _UndecidedError(unknown)
 
     # ---- the launch file's own functions --------------------------------------------
@@ -370,6 +370,8 @@ def _targets(node: ast.AST) -> list[ast.expr]:
         return list(node.targets)
     if isinstance(node, ast.AnnAssign | ast.AugAssign | ast.For):
         return [node.target]
+    if isinstance(node, ast.With):
+        return [item.optional_vars for item in node.items if item.optional_vars is not None]
     if isinstance(node, ast.FunctionDef):
         return [ast.Name(node.name)]
     return []
@@ -405,7 +407,7 @@ def _leaves(body: list[ast.stmt], loop: bool) -> bool:
             return True
         if isinstance(statement, ast.Break | ast.Continue) and not loop:
             return True
-        if isinstance(statement, ast.If | ast.With | ast.Try):
+        if isinstance(statement, ast.If | ast.With | ast.Try | ast.Match):
             inner = [s for part in _bodies(statement) for s in part]
             if _leaves(inner, loop):
                 return True
@@ -415,10 +417,15 @@ def _leaves(body: list[ast.stmt], loop: bool) -> bool:
     return False
 
 
-def _bodies(statement: ast.If | ast.With | ast.Try) -> list[list[ast.stmt]]:
-    if isinstance(statement, ast.If):
+def _bodies(statement: ast.stmt) -> list[list[ast.stmt]]:
+    """The statements a compound statement holds."""
+    if isinstance(statement, ast.If | ast.For | ast.While):
         return [statement.body, statement.orelse]
     if isinstance(statement, ast.With):
         return [statement.body]
-    return [statement.body, statement.orelse, statement.finalbody,
-            *(h.body for h in statement.handlers)]  # fmt: skip
+    if isinstance(statement, ast.Try):
+        return [statement.body, statement.orelse, statement.finalbody,
+                *(h.body for h in statement.handlers)]  # fmt: skip
+    if isinstance(statement, ast.Match):
+        return [case.body for case in statement.cases]
+    return []

@@ -49,7 +49,7 @@ def is_plain(value: Any) -> bool:
         return all(is_plain(item) for item in value)
     if isinstance(value, dict):
         return all(is_plain(k) and is_plain(v) for k, v in value.items())
-    return value is None or isinstance(value, bool | int | float | str)
+    return value is None or isinstance(value, bool | int | float | str | slice)
 
 
 def plain(*values: Any) -> None:
@@ -154,8 +154,20 @@ METHODS: dict[str, Callable[..., Any]] = {
 }
 
 
-def builtin(function: Callable[..., Any], args: list[Any], keywords: dict[str, Any]) -> Any:
-    plain(*args, *keywords.values())
+# These take a list or a dict whatever it holds (actions too): only its shape counts.
+STRUCTURAL = {"len", "list", "tuple", "reversed", "enumerate", "zip", "keys", "values",
+              "items", "get"}  # fmt: skip
+
+
+def builtin(
+    name: str, function: Callable[..., Any], args: list[Any], keywords: dict[str, Any]
+) -> Any:
+    if name in STRUCTURAL:
+        for arg in (*args, *keywords.values()):
+            if not isinstance(arg, list | tuple | dict) or isinstance(arg, LaunchText):
+                plain(arg)
+    else:
+        plain(*args, *keywords.values())
     try:
         return function(*args, **keywords)
     except NotPlainError:

@@ -144,7 +144,8 @@ class ValueReader:
             found = binary(node.op, left, right)
         except NotPlainError:
             return self.scope.unknown(f"the value of {ast.unparse(node)[:60]!r}", self.where(node))
-        return Substituted(found) if isinstance(found, str) else found
+        substituted = isinstance(left, Substituted) or isinstance(right, Substituted)
+        return Substituted(found) if isinstance(found, str) and substituted else found
 
     def python(self, node: ast.expr) -> Value:
         """A comparison, ``not``, ``and``/``or``, ``x if c else y``, ``x[i]``."""
@@ -156,7 +157,10 @@ class ValueReader:
                 if isinstance(found, Unknown):
                     return found
                 if not is_plain(found):
-                    return self.scope.unknown(f"the test {written!r} (on a substitution)", where)
+                    return self.scope.unknown(
+                        f"the test {written!r} (on a substitution, whose value only launch knows)",
+                        where,
+                    )
                 if bool(found) == isinstance(node.op, ast.Or):
                     return found
             return found
@@ -182,15 +186,28 @@ class ValueReader:
             try:
                 return compare(node.ops, values)
             except NotPlainError:
-                return self.scope.unknown(f"the test {written!r} (on a substitution)", where)
+                return self.scope.unknown(
+                    f"the test {written!r} (on a substitution, whose value only launch knows)",
+                    where,
+                )
         if isinstance(node, ast.Subscript):
-            container, index = self.value(node.value), self.value(node.slice)
-            if isinstance(container, dict | list | tuple) and is_plain(index):
+            container, index = self.value(node.value), self.index(node.slice)
+            if isinstance(index, Unknown):
+                return index
+            if isinstance(container, dict | list | tuple | str) and is_plain(index):
                 try:
                     return container[index]
                 except (IndexError, KeyError, TypeError):
                     pass
         return self.scope.unknown(f"the value of {written!r}", where)
+
+    def index(self, node: ast.expr) -> Value:
+        if not isinstance(node, ast.Slice):
+            return self.value(node)
+        bounds = [None if b is None else self.value(b) for b in (node.lower, node.upper, node.step)]
+        if all(b is None or (isinstance(b, int) and not isinstance(b, bool)) for b in bounds):
+            return slice(*bounds)
+        return self.scope.unknown(f"the slice {ast.unparse(node)!r}", self.where(node))
 
     def truth(self, test: ast.expr) -> bool | Unknown:
         """Whether Python takes ``if test``: known only for values it holds before launch."""
@@ -305,7 +322,7 @@ class ValueReader:
             if isinstance(found, Unknown):
                 return found
         try:
-            return builtin(function, args, keywords)
+            return builtin(name, function, args, keywords)
         except NotPlainError:
             return self.scope.unknown(what, where)
 
