@@ -92,7 +92,7 @@ def items(value: Any) -> list[Any]:
     else:
         raise NotPlainError
     if len(found) > MAX_ITEMS:
-        raise NotPlainError
+        raise NotPlainError(f"over {MAX_ITEMS} items")
     return found
 
 
@@ -104,7 +104,7 @@ def _range(*args: Any) -> list[int]:
     except (TypeError, ValueError) as exc:
         raise NotPlainError from exc
     if len(span) > MAX_ITEMS:
-        raise NotPlainError
+        raise NotPlainError(f"over {MAX_ITEMS} items")
     return list(span)
 
 

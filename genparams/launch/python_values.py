@@ -323,8 +323,8 @@ class ValueReader:
                 return found
         try:
             return builtin(name, function, args, keywords)
-        except NotPlainError:
-            return self.scope.unknown(what, where)
+        except NotPlainError as exc:
+            return self.scope.unknown(f"{what} ({exc})" if str(exc) else what, where)
 
     def declare(self, values: dict[str, Value], where: Location) -> None:
         """A ``DeclareLaunchArgument`` met while reading: its default, by its name."""

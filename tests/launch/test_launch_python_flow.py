@@ -8,6 +8,7 @@ from pathlib import Path
 import pytest
 
 from genparams.cli import main
+from genparams.launch.model import InlineParameters
 from genparams.launch.packages import Packages
 from genparams.launch.reader import read_launch
 from tests.launch.test_launch_files import CORPUS, PACKAGE_ARGS, nodes, read, unknowns
@@ -227,3 +228,60 @@ def generate_launch_description():
     )
     assert read_source(tmp_path, source) == (["/front", "/a/c"], [])
     assert read_source(tmp_path, source, rear_enabled="true")[0] == ["/front", "/rear", "/a/c"]
+
+
+def test_an_include_per_robot_gets_its_arguments(tmp_path: Path) -> None:
+    (tmp_path / "robot.launch.xml").write_text(
+        '<launch>\n  <arg name="robot"/>\n  <arg name="speed" default="1.0"/>\n'
+        '  <node pkg="p" exec="e" name="base" namespace="$(var robot)">\n'
+        '    <param name="speed" value="$(var speed)"/>\n  </node>\n</launch>\n',
+        encoding="utf-8",
+    )
+    source = (
+        HEADER
+        + f"""\
+FLEET = [("alpha", 0.5), ("beta", 2)]
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        IncludeLaunchDescription(
+            XMLLaunchDescriptionSource("{tmp_path}/robot.launch.xml"),
+            launch_arguments={{"robot": name, "speed": str(speed)}}.items(),
+        )
+        for name, speed in FLEET
+    ] if FLEET else [])
+"""
+    )
+    launch = tmp_path / "fleet.launch.py"
+    launch.write_text(source, encoding="utf-8")
+    result = read_launch(launch, {}, Packages({}))
+    speeds = [s.values[0][1] for n in result.nodes for s in n.parameters
+              if isinstance(s, InlineParameters)]  # fmt: skip
+    assert [n.full_name for n in result.nodes] == ["/alpha/base", "/beta/base"]
+    assert speeds == [0.5, 2]
+    assert unknowns(result) == []
+
+
+def test_loops_too_long_to_follow_stop_with_a_report(tmp_path: Path) -> None:
+    found = read_source(
+        tmp_path,
+        HEADER
+        + """\
+def generate_launch_description():
+    ld = LaunchDescription([Node(package="p", executable="e", name="first")])
+    for i in range(100000):
+        ld.add_action(Node(package="p", executable="e", name="never"))
+    total = 0
+    for i in range(4000):
+        for j in range(4000):
+            total += 1
+    return ld
+""",
+    )
+    assert found == ([], [
+        "shape.launch.py:6:14: the value of 'range(100000)' (over 4096 items)",
+        "shape.launch.py:6:5: what 'for i in range(100000):' adds (its items are not known)",
+        "shape.launch.py:4:1: the rest of generate_launch_description() (over 50000 statements "
+        "to follow)",
+    ])  # fmt: skip
