@@ -45,6 +45,18 @@ def read_python_launch(source: str, scope: Scope) -> None:
         for t in n.targets
         if isinstance(t, ast.Name)
     }
+    try:
+        _follow(scope, function, constants, functions)
+    except RecursionError:  # values nested in themselves (a list appended to itself)
+        scope.unknown("the launch file (its values nest too deep to follow)", scope.at(1, 1))
+
+
+def _follow(
+    scope: Scope,
+    function: ast.FunctionDef,
+    constants: dict[str, ast.expr],
+    functions: dict[str, ast.FunctionDef],
+) -> None:
     # Arguments first: launch resolves configurations when it runs, after the description
     # is built, so a default may use a variable assigned anywhere in the function. A dry
     # run (its findings dropped) gives the variables and the arguments declared in loops

@@ -285,3 +285,18 @@ def generate_launch_description():
         "shape.launch.py:4:1: the rest of generate_launch_description() (over 50000 statements "
         "to follow)",
     ])  # fmt: skip
+
+
+def test_a_list_holding_itself_stops_with_a_report(tmp_path: Path) -> None:
+    found = read_source(
+        tmp_path,
+        HEADER
+        + """\
+def generate_launch_description():
+    nodes = [Node(package="p", executable="e", name="a")]
+    nodes.append(nodes)
+    return LaunchDescription(nodes)
+""",
+    )
+    assert found == ([], ["shape.launch.py:1:1: the launch file (its values nest too deep to "
+                          "follow)"])  # fmt: skip
