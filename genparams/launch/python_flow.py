@@ -141,8 +141,12 @@ class FlowReader(ValueReader):
             known, container = self.lookup(target.value.id)
             index = self.value(target.slice)
             if known and isinstance(container, dict) and not isinstance(index, Unknown):
-                container[index] = found  # params["rate"] = 5.0
-                return
+                try:
+                    container[index] = found  # params["rate"] = 5.0
+                except TypeError:
+                    pass  # a key Python cannot hash: reported below
+                else:
+                    return
         self.scope.unknown(f"what {ast.unparse(statement)[:50]!r} sets", self.where(statement))
 
     def augment(self, statement: ast.AugAssign, target: ast.Name) -> None:
@@ -323,7 +327,7 @@ class FlowReader(ValueReader):
 
     # ---- list comprehensions --------------------------------------------------------
 
-    def comprehension(self, node: ast.ListComp) -> Value:
+    def comprehension(self, node: ast.ListComp | ast.GeneratorExp) -> Value:
         built: list[Value] = []
         saved = self.variables
         self.variables = dict(saved)  # its variables stay inside it
@@ -333,7 +337,9 @@ class FlowReader(ValueReader):
             self.variables = saved
         return built if unknown is None else unknown
 
-    def generate(self, node: ast.ListComp, index: int, built: list[Value]) -> Unknown | None:
+    def generate(
+        self, node: ast.ListComp | ast.GeneratorExp, index: int, built: list[Value]
+    ) -> Unknown | None:
         if index == len(node.generators):
             built.append(self.value(node.elt))
             return None

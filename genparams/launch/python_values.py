@@ -98,13 +98,9 @@ class ValueReader:
             if known:
                 return found
         if isinstance(node, ast.List | ast.Tuple):
-            return [self.value(item) for item in node.elts]
+            return self.sequence(node)
         if isinstance(node, ast.Dict):
-            return {
-                self.value(k): self.value(v)
-                for k, v in zip(node.keys, node.values, strict=True)
-                if k is not None
-            }
+            return self.mapping(node)
         if isinstance(node, ast.Call):
             return self.call(node)
         if isinstance(node, ast.BinOp):
@@ -117,15 +113,49 @@ class ValueReader:
             return text(parts)
         if isinstance(node, ast.Compare | ast.BoolOp | ast.UnaryOp | ast.IfExp | ast.Subscript):
             return self.python(node)
-        if isinstance(node, ast.ListComp):
+        if isinstance(node, ast.ListComp | ast.GeneratorExp):
             return self.comprehension(node)
         try:
             return Evaluator(ValueScope(module_constants=self.constants)).value(node)
         except UntranslatableError as exc:
             return self.scope.unknown(exc.what, self.where(node))
 
-    def comprehension(self, node: ast.ListComp) -> Value:
+    def comprehension(self, node: ast.ListComp | ast.GeneratorExp) -> Value:
         return self.scope.unknown(f"the value of {ast.unparse(node)[:60]!r}", self.where(node))
+
+    def sequence(self, node: ast.List | ast.Tuple) -> Value:
+        """A list or tuple, ``*spread`` items included (``[*arguments, *nodes]``)."""
+        found: list[Value] = []
+        for item in node.elts:
+            if not isinstance(item, ast.Starred):
+                found.append(self.value(item))
+                continue
+            spread = self.value(item.value)
+            if isinstance(spread, list | tuple | dict) and not isinstance(spread, LaunchText):
+                found.extend(spread)
+            else:
+                found.append(
+                    spread
+                    if isinstance(spread, Unknown)
+                    else self.scope.unknown(f"the items of {ast.unparse(item)!r}", self.where(item))
+                )
+        return found
+
+    def mapping(self, node: ast.Dict) -> Value:
+        """A dict, ``**spread`` ones included; a key Python cannot hash is unknown."""
+        found: dict[Any, Value] = {}
+        for key, item in zip(node.keys, node.values, strict=True):
+            if key is None:
+                spread = self.value(item)
+                if isinstance(spread, dict):
+                    found.update(spread)
+                continue
+            name, value = self.value(key), self.value(item)
+            try:
+                found[name] = value
+            except TypeError:
+                return self.scope.unknown(f"the key {ast.unparse(key)!r}", self.where(key))
+        return found
 
     def binary(self, node: ast.BinOp) -> Value:
         left, right = self.value(node.left), self.value(node.right)

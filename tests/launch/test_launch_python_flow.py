@@ -300,3 +300,35 @@ def generate_launch_description():
     )
     assert found == ([], ["shape.launch.py:1:1: the launch file (its values nest too deep to "
                           "follow)"])  # fmt: skip
+
+
+def test_spreads_generators_and_dicts_filled_in_a_loop(tmp_path: Path) -> None:
+    source = (
+        HEADER
+        + """\
+COMMON = {"use_sim_time": False}
+GAINS = {"kp": 1.0, "ki": 0.1}
+
+
+def generate_launch_description():
+    arguments = [DeclareLaunchArgument("unused", default_value="x")]
+    params = {**COMMON, "mode": "fast"}
+    for gain, value in GAINS.items():
+        params["pid." + gain] = value * 2
+    nodes = (Node(package="p", executable="e", name=n, parameters=[params]) for n in ("a", "b"))
+    broken = {[1]: "never"}
+    return LaunchDescription([*arguments, *nodes, *UNKNOWN_LIST])
+"""
+    )
+    launch = tmp_path / "shape.launch.py"
+    launch.write_text(source, encoding="utf-8")
+    result = read_launch(launch, {}, Packages({}))
+    assert nodes(result) == [
+        (f"/{n}", "node", "p/e", "",
+         [{"use_sim_time": False, "mode": "fast", "pid.kp": 2.0, "pid.ki": 0.2}])
+        for n in ("a", "b")
+    ]  # fmt: skip
+    assert unknowns(result) == [
+        "shape.launch.py:14:15: the key '[1]'",
+        "shape.launch.py:15:52: the variable 'UNKNOWN_LIST'",
+    ]
