@@ -290,6 +290,16 @@ class ValueReader:
             return Substituted(joined) if isinstance(joined, str) else joined
         if name == "TextSubstitution":
             return _launch_text(text(self.value(_required(node, 0, "text"))))
+        if ast.unparse(node.func) in ("os.environ.get", "environ.get", "os.getenv", "getenv"):
+            key = self.value(_required(node, 0, "key"))
+            default = argument(1, "default")
+            if not isinstance(key, str) or isinstance(key, LaunchText):
+                return self.scope.unknown(f"the value of {ast.unparse(node)[:60]!r}", where)
+            # Read while the description is built: this machine's environment, as for
+            # EnvironmentVariable; unset and without a default, only launch knows it.
+            return environment(
+                key, None if default is None else self.value(default), self.scope, where
+            )
         if name == "EnvironmentVariable":
             key = text(self.value(_required(node, 0, "name")))
             default = argument(1, "default_value")

@@ -89,7 +89,7 @@ DYNAMIC_UNKNOWNS = [
     "fleet_dynamic.launch.py:17:5: what the statement 'with open(path) as stream:' adds",
     "fleet_dynamic.launch.py:29:5: what 'for robot in load_robots(FLEET_FILE):' adds "
     "(its items are not known)",
-    "fleet_dynamic.launch.py:31:8: a value read from the environment",
+    "fleet_dynamic.launch.py:31:8: environment variable FLEET_DOCKING (unset here)",
     "fleet_dynamic.launch.py:31:5: what \"if os.environ.get('FLEET_DOCKING') == '1':\" adds "
     "(its test is not known)",
     "fleet_dynamic.launch.py:34:8: the test \"LaunchConfiguration('with_lidar') == 'true'\" "
@@ -111,6 +111,19 @@ def test_what_only_launch_knows_is_reported_never_guessed() -> None:
         ("/backup/driver", "node", driver, "", [{"rate": 10.0}]),
     ]
     assert unknowns(result) == DYNAMIC_UNKNOWNS
+
+
+def test_an_environment_variable_set_here_decides_the_test(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.setenv("FLEET_DOCKING", "1")
+    result = read("fleet_bringup/launch/fleet_dynamic.launch.py")
+    assert [(n[0], n[4]) for n in nodes(result)] == [
+        ("/dock", []),
+        ("/spare/driver", [{"rate": 5.0}]),
+        ("/backup/driver", [{"rate": 10.0}]),
+    ]
+    assert len(unknowns(result)) == len(DYNAMIC_UNKNOWNS) - 3
 
 
 def test_check_deployment_lists_the_loops_and_tests_it_cannot_read(
