@@ -72,7 +72,11 @@ class FlowReader(ValueReader):
         except _ReturnError as returned:
             self.loose.extend(flat(returned.value))
         except _UndecidedError:
-            pass  # reported where the test or loop is
+            self.scope.unknown(
+                f"what {function.name}() returns (it may return under a test or loop only "
+                "launch decides)",
+                self.where(function),
+            )
         except _TooLongError:
             self.scope.unknown(
                 f"the rest of {function.name}() (over {MAX_STEPS} statements to follow)",

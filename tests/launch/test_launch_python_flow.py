@@ -345,3 +345,26 @@ def generate_launch_description():
         "shape.launch.py:14:15: the key '[1]'",
         "shape.launch.py:15:52: the variable 'UNKNOWN_LIST'",
     ]
+
+
+def test_a_return_under_an_unknown_test_leaves_the_description_unknown(tmp_path: Path) -> None:
+    found = read_source(
+        tmp_path,
+        HEADER
+        + """\
+def generate_launch_description():
+    nodes = [Node(package="p", executable="e", name="a")]
+    for robot in ["x", "y"]:
+        if os.getenv("FLEET_STOP_AT") == robot:
+            break
+        nodes.append(Node(package="p", executable="e", name=robot))
+    return LaunchDescription(nodes)
+""",
+    )
+    assert found == ([], [
+        "shape.launch.py:7:12: environment variable FLEET_STOP_AT (unset here)",
+        "shape.launch.py:7:9: what \"if os.getenv('FLEET_STOP_AT') == robot:\" adds (its test "
+        "is not known)",
+        "shape.launch.py:4:1: what generate_launch_description() returns (it may return under a "
+        "test or loop only launch decides)",
+    ])  # fmt: skip
