@@ -17,6 +17,7 @@ from dataclasses import dataclass
 from genparams.launch.model import Unknown
 from genparams.launch.python_actions import flat
 from genparams.launch.python_operators import NotPlainError, binary, items
+from genparams.launch.python_syntax import bodies, leaves, names, targets, walk
 from genparams.launch.python_values import NOT_OWN, ValueReader
 from genparams.launch.scope import Scope, Value
 
@@ -138,7 +139,7 @@ class FlowReader(ValueReader):
                 found = self.scope.unknown(
                     f"the unpacking {ast.unparse(target)[:50]!r}", self.where(target)
                 )
-            for name in _names(target):
+            for name in names(target):
                 self.variables[name] = found
             return
         if isinstance(target, ast.Subscript) and isinstance(target.value, ast.Name):
@@ -215,15 +216,15 @@ class FlowReader(ValueReader):
         variables it sets are unknown from here, and a ``return`` under it leaves its
         function unknown."""
         unknown = self.scope.unknown(what, self.where(statement))
-        inner = [s for part in _bodies(statement) for s in part]
-        for node in [statement, *_walk(inner)]:
-            for target in _targets(node):
-                for name in _names(target):
+        inner = [s for part in bodies(statement) for s in part]
+        for node in [statement, *walk(inner)]:
+            for target in targets(node):
+                for name in names(target):
                     if not isinstance(self.lookup(name)[1], list):
                         self.variables[name] = unknown
                 if isinstance(target, ast.Subscript) and isinstance(target.value, ast.Name):
                     self.variables[target.value.id] = unknown
-        if _leaves(inner, loop=isinstance(statement, ast.For | ast.While)):
+        if leaves(inner, loop=isinstance(statement, ast.For | ast.While)):
             raise _UndecidedError(unknown)
 
     # ---- the launch file's own functions --------------------------------------------
@@ -373,69 +374,3 @@ class FlowReader(ValueReader):
                 if unknown is not None:
                     return unknown
         return None
-
-
-def _targets(node: ast.AST) -> list[ast.expr]:
-    if isinstance(node, ast.Assign):
-        return list(node.targets)
-    if isinstance(node, ast.AnnAssign | ast.AugAssign | ast.For):
-        return [node.target]
-    if isinstance(node, ast.With):
-        return [item.optional_vars for item in node.items if item.optional_vars is not None]
-    if isinstance(node, ast.FunctionDef):
-        return [ast.Name(node.name)]
-    return []
-
-
-def _names(target: ast.expr) -> list[str]:
-    if isinstance(target, ast.Name):
-        return [target.id]
-    if isinstance(target, ast.Tuple | ast.List):
-        return [name for item in target.elts for name in _names(item)]
-    if isinstance(target, ast.Starred):
-        return _names(target.value)
-    return []
-
-
-def _walk(body: list[ast.stmt]) -> list[ast.AST]:
-    """The nodes of ``body``, not those of the functions it defines."""
-    found: list[ast.AST] = []
-    pending: list[ast.AST] = list(body)
-    while pending:
-        node = pending.pop()
-        found.append(node)
-        if not isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.Lambda):
-            pending.extend(ast.iter_child_nodes(node))
-    return found
-
-
-def _leaves(body: list[ast.stmt], loop: bool) -> bool:
-    """Whether ``body`` holds a ``return`` (or, under an ``if``, a ``break``/``continue``)
-    that leaves what encloses it; loops and functions inside it keep their own."""
-    for statement in body:
-        if isinstance(statement, ast.Return):
-            return True
-        if isinstance(statement, ast.Break | ast.Continue) and not loop:
-            return True
-        if isinstance(statement, ast.If | ast.With | ast.Try | ast.Match):
-            inner = [s for part in _bodies(statement) for s in part]
-            if _leaves(inner, loop):
-                return True
-        if isinstance(statement, ast.For | ast.While):
-            if _leaves([*statement.body, *statement.orelse], loop=True):
-                return True
-    return False
-
-
-def _bodies(statement: ast.stmt) -> list[list[ast.stmt]]:
-    """The statements a compound statement holds."""
-    if isinstance(statement, ast.If | ast.For | ast.While):
-        return [statement.body, statement.orelse]
-    if isinstance(statement, ast.With):
-        return [statement.body]
-    if isinstance(statement, ast.Try):
-        return [statement.body, statement.orelse, statement.finalbody,
-                *(h.body for h in statement.handlers)]  # fmt: skip
-    if isinstance(statement, ast.Match):
-        return [case.body for case in statement.cases]
-    return []
