@@ -6,6 +6,7 @@ import ast
 
 
 def targets(node: ast.AST) -> list[ast.expr]:
+    """What a statement binds: assignment targets, loop variables, ``as`` names, a ``def``."""
     if isinstance(node, ast.Assign):
         return list(node.targets)
     if isinstance(node, ast.AnnAssign | ast.AugAssign | ast.For):
@@ -18,6 +19,7 @@ def targets(node: ast.AST) -> list[ast.expr]:
 
 
 def names(target: ast.expr) -> list[str]:
+    """The variables a target binds (``a, (b, *c)`` binds a, b and c)."""
     if isinstance(target, ast.Name):
         return [target.id]
     if isinstance(target, ast.Tuple | ast.List):
