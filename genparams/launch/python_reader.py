@@ -38,13 +38,15 @@ def read_python_launch(source: str, scope: Scope) -> None:
     if function is None:
         scope.unknown(f"the launch file (no {ENTRY}())", scope.at(1, 1))
         return
-    constants = {
-        t.id: n.value
-        for n in tree.body
-        if isinstance(n, ast.Assign)
-        for t in n.targets
-        if isinstance(t, ast.Name)
-    }
+    constants: dict[str, ast.expr] = {}
+    for statement in tree.body:
+        if isinstance(statement, ast.Assign):
+            for target in statement.targets:
+                if isinstance(target, ast.Name):
+                    constants[target.id] = statement.value
+        elif isinstance(statement, ast.AnnAssign) and statement.value is not None:
+            if isinstance(statement.target, ast.Name):  # ROBOTS: list[str] = [...]
+                constants[statement.target.id] = statement.value
     try:
         _follow(scope, function, constants, functions)
     except RecursionError:  # values nested in themselves (a list appended to itself)

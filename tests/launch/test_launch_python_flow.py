@@ -319,7 +319,7 @@ def test_spreads_generators_and_dicts_filled_in_a_loop(tmp_path: Path) -> None:
     source = (
         HEADER
         + """\
-COMMON = {"use_sim_time": False}
+COMMON: dict[str, bool] = {"use_sim_time": False}
 GAINS = {"kp": 1.0, "ki": 0.1}
 
 
