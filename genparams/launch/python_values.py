@@ -45,6 +45,7 @@ ACTIONS = (*NODE_KINDS, "ComposableNode", "ComposableNodeContainer", "LoadCompos
 SOURCES = ("PythonLaunchDescriptionSource", "AnyLaunchDescriptionSource",
            "XMLLaunchDescriptionSource", "YAMLLaunchDescriptionSource",
            "FrontendLaunchDescriptionSource")  # fmt: skip
+ENVIRON = ("os.environ", "environ")
 NOT_OWN = object()  # a call of none of the launch file's own functions
 
 
@@ -220,6 +221,10 @@ class ValueReader:
                     f"the test {written!r} (on a substitution, whose value only launch knows)",
                     where,
                 )
+        if isinstance(node, ast.Subscript) and ast.unparse(node.value) in ENVIRON:
+            key = self.value(node.slice)  # os.environ["X"]: set here, or only launch knows
+            if isinstance(key, str) and not isinstance(key, LaunchText):
+                return environment(key, None, self.scope, where)
         if isinstance(node, ast.Subscript):
             container, index = self.value(node.value), self.index(node.slice)
             if isinstance(index, Unknown):
@@ -290,7 +295,7 @@ class ValueReader:
             return Substituted(joined) if isinstance(joined, str) else joined
         if name == "TextSubstitution":
             return _launch_text(text(self.value(_required(node, 0, "text"))))
-        if ast.unparse(node.func) in ("os.environ.get", "environ.get", "os.getenv", "getenv"):
+        if ast.unparse(node.func) in (*(f"{e}.get" for e in ENVIRON), "os.getenv", "getenv"):
             key = self.value(_required(node, 0, "key"))
             default = argument(1, "default")
             if not isinstance(key, str) or isinstance(key, LaunchText):

@@ -355,7 +355,7 @@ def test_a_return_under_an_unknown_test_leaves_the_description_unknown(tmp_path:
 def generate_launch_description():
     nodes = [Node(package="p", executable="e", name="a")]
     for robot in ["x", "y"]:
-        if os.getenv("FLEET_STOP_AT") == robot:
+        if os.environ["FLEET_STOP_AT"] == robot:
             break
         nodes.append(Node(package="p", executable="e", name=robot))
     return LaunchDescription(nodes)
@@ -363,7 +363,7 @@ def generate_launch_description():
     )
     assert found == ([], [
         "shape.launch.py:7:12: environment variable FLEET_STOP_AT (unset here)",
-        "shape.launch.py:7:9: what \"if os.getenv('FLEET_STOP_AT') == robot:\" adds (its test "
+        "shape.launch.py:7:9: what \"if os.environ['FLEET_STOP_AT'] == robot:\" adds (its test "
         "is not known)",
         "shape.launch.py:4:1: what generate_launch_description() returns (it may return under a "
         "test or loop only launch decides)",
