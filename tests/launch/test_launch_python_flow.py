@@ -368,3 +368,26 @@ def generate_launch_description():
         "shape.launch.py:4:1: what generate_launch_description() returns (it may return under a "
         "test or loop only launch decides)",
     ])  # fmt: skip
+
+
+def test_arguments_declared_in_a_function_have_their_defaults(tmp_path: Path) -> None:
+    source = (
+        HEADER
+        + """\
+def declare_arguments(default_robot="alpha"):
+    return [DeclareLaunchArgument("robot", default_value=default_robot),
+            DeclareLaunchArgument("rate")]
+
+
+def generate_launch_description():
+    robot = LaunchConfiguration("robot")
+    return LaunchDescription(declare_arguments() + [
+        Node(package="p", executable="e", name="driver", namespace=robot,
+             parameters=[{"rate": LaunchConfiguration("rate")}]),
+    ])
+"""
+    )
+    assert read_source(tmp_path, source) == (["/alpha/driver"], [
+        "shape.launch.py:6:13: parameter rate",  # launch argument rate: no default, none given
+    ])  # fmt: skip
+    assert read_source(tmp_path, source, robot="beta", rate="2.5")[0] == ["/beta/driver"]
