@@ -10,9 +10,8 @@ from collections.abc import Callable
 from typing import Any
 
 from genparams.launch.nodes import Substituted
+from genparams.rclpy_import.limits import MAX_ITEMS, computable
 from genparams.rclpy_import.ros_names import BINARY
-
-MAX_ITEMS = 4096  # a loop's items, a list repeated, a range: followed up to this length
 
 
 class LaunchText(Substituted):
@@ -60,12 +59,7 @@ def plain(*values: Any) -> None:
 
 def binary(op: ast.operator, left: Any, right: Any) -> Any:
     plain(left, right)
-    if isinstance(op, ast.Mult) and (isinstance(left, int) or isinstance(right, int)):
-        count = left if isinstance(left, int) else right
-        other = right if isinstance(left, int) else left
-        if isinstance(other, str | list | tuple) and count * len(other) > MAX_ITEMS:
-            raise NotPlainError
-    if isinstance(op, ast.Pow) and isinstance(right, int | float) and abs(right) > 64:
+    if not computable(op, left, right):
         raise NotPlainError
     try:
         return BINARY[type(op)](left, right)

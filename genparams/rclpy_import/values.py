@@ -16,6 +16,7 @@ from collections.abc import Callable
 from dataclasses import replace
 from typing import Any
 
+from genparams.rclpy_import.limits import computable
 from genparams.rclpy_import.ros_names import (
     BINARY,
     DESCRIPTOR_FIELDS,
@@ -76,7 +77,6 @@ _FUNCTIONS: dict[str, Callable[..., Any]] = {
     "round": round,
 }
 _SHARE = "get_package_share_directory"
-_MAX_ITEMS = 4096  # a list repeated (``[0.0] * n``) is computed up to this length
 
 
 def evaluate_constant(expression: ast.expr, module: ast.Module | None = None) -> Any:
@@ -124,7 +124,7 @@ class Evaluator:
             left, right = self.value(node.left), self.value(node.right)
             if _repeated(node.op, left, right):
                 return left * right if isinstance(left, list) else right * left
-            if _same_kind(left, right) and not _too_large(node.op, left, right):
+            if _same_kind(left, right) and computable(node.op, left, right):
                 try:
                     result = BINARY[type(node.op)](left, right)
                 except (ArithmeticError, TypeError, ValueError):
@@ -399,7 +399,8 @@ def _repeated(op: ast.operator, left: Any, right: Any) -> bool:
         isinstance(items, list)
         and isinstance(count, int)
         and not isinstance(count, bool)
-        and 0 <= count * len(items) <= _MAX_ITEMS
+        and count >= 0
+        and computable(op, items, count)
     )
 
 
@@ -413,8 +414,3 @@ def _same_kind(left: Any, right: Any) -> bool:
     if isinstance(left, str) and isinstance(right, str):
         return True
     return isinstance(left, list) and isinstance(right, list)
-
-
-def _too_large(op: ast.operator, left: Any, right: Any) -> bool:
-    """A power whose result could exhaust memory or time (``10 ** 10 ** 9``) is not computed."""
-    return isinstance(op, ast.Pow) and _is_number(right) and abs(right) > 64

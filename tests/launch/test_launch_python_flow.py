@@ -391,3 +391,24 @@ def generate_launch_description():
         "shape.launch.py:6:13: parameter rate",  # launch argument rate: no default, none given
     ])  # fmt: skip
     assert read_source(tmp_path, source, robot="beta", rate="2.5")[0] == ["/beta/driver"]
+
+
+def test_values_too_large_to_work_out_are_left_to_launch(tmp_path: Path) -> None:
+    """The limits of import-rclpy's evaluator hold here too (one rule): a power's exponent
+    over 64 and a text repeated past 4096 characters are not computed while reading."""
+    found = read_source(
+        tmp_path,
+        HEADER
+        + """\
+def generate_launch_description():
+    big = 10 ** 10 ** 9
+    name = "n" * 5000
+    small = "n" * 3 + str(2 ** 10)
+    return LaunchDescription([Node(package="p", executable="e", name=small)])
+""",
+    )
+    assert found[0] == ["/nnn1024"], found
+    assert [line.split(": ", 1)[0] for line in found[1]] == [
+        "shape.launch.py:5:11",
+        "shape.launch.py:6:12",
+    ], found

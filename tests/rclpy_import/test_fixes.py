@@ -571,3 +571,25 @@ def test_a_method_nothing_read_calls_declares_approximately_with_a_note(
     notes = {line.split(": ")[1] for line in err.splitlines() if "no file read calls" in line}
     assert notes == {"poll_rate"}, err
     assert err.endswith("imported 7 of 7 parameters (1 approximately)\n")
+
+
+def test_values_too_large_to_work_out_are_left_to_run_time(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """The limits the launch reader keeps (one rule, genparams.rclpy_import.limits): a
+    power's exponent over 64 and a list repeated past 4096 items are not computed."""
+    node = tmp_path / "big.py"
+    node.write_text(
+        "class Big:\n    def __init__(self):\n"
+        "        self.declare_parameter('huge', 10 ** 10 ** 9)\n"
+        "        self.declare_parameter('long', [0.0] * 5000)\n"
+        "        self.declare_parameter('fine', [0.0] * 3 + [2.0 ** 10])\n",
+        encoding="utf-8",
+    )
+    code, out, err = run(capsys, str(node))
+    assert code == 1, err
+    assert "huge: warning: value computed at run time" in err
+    assert "long: warning: value computed at run time" in err
+    assert yaml.safe_load(out)["parameters"] == {
+        "fine": {"type": "double_array", "default": [0.0, 0.0, 0.0, 1024.0]}
+    }
