@@ -14,6 +14,7 @@ from __future__ import annotations
 import ast
 from dataclasses import dataclass
 
+from genparams.errors import GenparamsError
 from genparams.launch.model import Unknown
 from genparams.launch.python_actions import flat
 from genparams.launch.python_operators import NotPlainError, binary, items
@@ -31,20 +32,20 @@ class Function:
     outer: tuple[dict[str, Value], ...]  # the frames a nested function sees
 
 
-class _ReturnError(Exception):
+class _ReturnError(GenparamsError):
     def __init__(self, value: Value) -> None:
         self.value = value
 
 
-class _BreakError(Exception):
+class _BreakError(GenparamsError):
     pass
 
 
-class _ContinueError(Exception):
+class _ContinueError(GenparamsError):
     pass
 
 
-class _UndecidedError(Exception):
+class _UndecidedError(GenparamsError):
     """A ``return``, ``break`` or ``continue`` under a test or loop the reader cannot decide:
     the rest of its function is not known."""
 
@@ -52,7 +53,7 @@ class _UndecidedError(Exception):
         self.unknown = unknown
 
 
-class _TooLongError(Exception):
+class _TooLongError(GenparamsError):
     pass
 
 

@@ -9,6 +9,7 @@ import operator
 from collections.abc import Callable
 from typing import Any
 
+from genparams.errors import GenparamsError
 from genparams.launch.nodes import Substituted
 from genparams.rclpy_import.limits import MAX_ITEMS, computable
 from genparams.rclpy_import.ros_names import BINARY
@@ -22,7 +23,7 @@ class LaunchText(Substituted):
     __slots__ = ()
 
 
-class NotPlainError(Exception):
+class NotPlainError(GenparamsError):
     """The operation needs a value Python does not hold before launch runs, or fails."""
 
 
