@@ -15,8 +15,10 @@ HEADER = (
 )
 
 
-def _share(part: int, whole: int) -> str:
-    return f"{part} of {whole} ({100 * part / whole:.1f}%)" if whole else "0 of 0"
+def share_text(part: int, whole: int) -> str:
+    """``245 of 258 (94.9%)``: the percentage cut to one decimal, never rounded up, so a
+    share below a target never reads as meeting it."""
+    return f"{part} of {whole} ({1000 * part // whole / 10:.1f}%)" if whole else "0 of 0"
 
 
 def _node_run(row: Row) -> str:
@@ -58,8 +60,8 @@ def _total(label: str, rows: Sequence[Row]) -> str:
     whole_all = sum(r.whole.parameters for r in rows)
     cells = [
         f"**{label}: {len(rows)} nodes**", "", "", "",
-        f"**{_share(file_exact, file_all)}**", f"**{whole_all}**",
-        f"**{_share(sum(r.whole.exact for r in rows), whole_all)}**",
+        f"**{share_text(file_exact, file_all)}**", f"**{whole_all}**",
+        f"**{share_text(sum(r.whole.exact for r in rows), whole_all)}**",
         f"**{sum(r.whole.checked for r in rows)}**",
         f"**{sum(r.whole.approximate for r in rows)}**",
         f"**{sum(r.whole.left_out for r in rows)}**",

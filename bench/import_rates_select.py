@@ -4,16 +4,30 @@
 
 Each repository (default: the manifest's ``repositories``) is read at the newest commit
 of its ``jazzy`` (or ``jazzy-devel``) branch where it has one, else of ``BRANCH``, else
-of its default branch. Printed, as manifest entries: every class, in a Python file
-outside test folders, that subclasses ``Node`` (or a node class of the same repository),
-is subclassed by no other node class, and calls ``declare_parameter``,
-``get_parameter``, ... or, on ``self``, a method of a node class of the repository
-(other than ``__init__`` and the like) that calls one; at
-most the first ten of a repository by path; none in a file of the manifest's table. A
-folder is a test folder when a word of its name (split at ``_`` and ``-``) is test,
-tests or testing. A file with several such classes gives one entry per class
-(``class``). ``params`` is the first YAML file, by path, of the node's package (the
-folder of its nearest ``package.xml``) with a section for the node's name holding
+of its default branch. Printed, as manifest entries, from the Python files outside test
+folders:
+
+- *node classes*: every class that subclasses ``Node`` (or a node class of the same
+  repository), is subclassed by no other node class, and calls ``declare_parameter``,
+  ``get_parameter``, ... or, on ``self``, a method of a node class of the repository
+  (other than ``__init__`` and the like) that calls one. A file with several such
+  classes gives one entry per class (``class``).
+- *script nodes*: a file none of whose classes is picked, where a function of the module
+  (``main()``) or its ``if __name__ == "__main__":`` block builds a plain node
+  (``Node(...)`` or ``LifecycleNode(...)`` imported from rclpy, ``rclpy.node.Node(...)``,
+  ``rclpy.create_node(...)``), binds it to a name and calls one of those methods on that
+  name. The file is one entry, without ``class``: import-rclpy reads the module's own
+  functions as one node where no class declares.
+
+A repository gives at most ten entries, its node classes first and its script nodes in
+the room they leave, each by path: the cap keeps one repository from weighing more than
+ten nodes, and counting scripts after classes leaves every class entry as the class rule
+alone picks it. The entries of files of the manifest's table are then left to the table;
+the rest are printed by path. A folder is a test folder when a word of its name (split
+at ``_`` and ``-``) is test, tests or testing. ``params`` is the first YAML file, by
+path, of the node's package (the folder of its nearest ``package.xml``) with a section
+for the node's name (a class's literal ``super().__init__("x")``, a script's
+``Node("x")`` or ``create_node("x")``, or ``node_name="x"``) holding
 ``ros__parameters``. Nothing is run: the files are read from git and parsed.
 """
 
@@ -30,6 +44,8 @@ from typing import Any
 
 import yaml
 
+from genparams.rclpy_import.reads import is_main_guard
+
 NODE_CLASSES = {"Node", "LifecycleNode"}
 # Calls on a node that declare or read its parameters.
 PARAMETER_CALLS = {
@@ -44,6 +60,8 @@ PARAMETER_CALLS = {
 TEST_WORDS = {"test", "tests", "testing"}  # a folder named by one: tests, nav2_system_tests
 BRANCHES = ("jazzy", "jazzy-devel")  # preferred where a repository has one
 MOST_PER_REPOSITORY = 10
+# What builds a plain node, imported from rclpy or called on it: Node(...), create_node(...)
+PLAIN_NODES = {*NODE_CLASSES, "create_node"}
 
 
 @dataclass(frozen=True)
@@ -113,12 +131,15 @@ def _base_name(base: ast.expr) -> str:
 
 def _node_name(cls: ast.ClassDef) -> str | None:
     """The literal name the class gives its node: ``super().__init__("x")``."""
-    for node in ast.walk(cls):
-        if not (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)):
-            continue
-        if node.func.attr != "__init__":
-            continue
-        written = [k.value for k in node.keywords if k.arg == "node_name"] + node.args[:1]
+    inits = [node for node in ast.walk(cls) if isinstance(node, ast.Call)
+             and isinstance(node.func, ast.Attribute) and node.func.attr == "__init__"]  # fmt: skip
+    return _literal_name(inits)
+
+
+def _literal_name(calls: list[ast.Call]) -> str | None:
+    """The first literal node name the calls give: their first argument or ``node_name``."""
+    for call in calls:
+        written = [k.value for k in call.keywords if k.arg == "node_name"] + call.args[:1]
         for value in written:
             if isinstance(value, ast.Constant) and isinstance(value.value, str):
                 return value.value
@@ -145,6 +166,84 @@ def _classes(path: str, text: bytes) -> list[Candidate]:
         called = _calls(node) & PARAMETER_CALLS | _calls(node, on_self=True)
         found.append(Candidate(path, node.name, bases, called, helpers, _node_name(node)))
     return found
+
+
+def _script(path: str, text: bytes) -> Candidate | None:
+    """The file as a script node: a function of the module, or its ``__main__`` block,
+    that builds a plain rclpy node, binds it to a name and calls a parameter method on
+    that name. ``cls`` is ""."""
+    try:
+        tree = ast.parse(text)
+    except (SyntaxError, ValueError):
+        return None
+    builders, modules = _rclpy_bindings(tree)
+    parts = [s for s in tree.body if isinstance(s, (ast.FunctionDef, ast.AsyncFunctionDef))
+             or (isinstance(s, ast.If) and is_main_guard(s))]  # fmt: skip
+    builds: list[ast.Call] = []
+    for part in parts:
+        bound = _bound_nodes(part, builders, modules)
+        on_node = {_receiver(call) for call in ast.walk(part)
+                   if isinstance(call, ast.Call) and _receiver(call) in bound}  # fmt: skip
+        builds += [bound[name] for name in sorted(on_node)]
+    if not builds:
+        return None
+    builds.sort(key=lambda call: (call.lineno, call.col_offset))
+    return Candidate(path, "", (), frozenset(), frozenset(), _literal_name(builds))
+
+
+def _bound_nodes(part: ast.stmt, builders: set[str], modules: set[str]) -> dict[str, ast.Call]:
+    """The names ``part`` binds to a plain node it builds (``node = Node("x")``), each
+    with the call that built it."""
+    bound: dict[str, ast.Call] = {}
+    for node in ast.walk(part):
+        if isinstance(node, ast.Assign):
+            value, targets = node.value, node.targets
+        elif isinstance(node, ast.AnnAssign) and node.value is not None:
+            value, targets = node.value, [node.target]
+        else:
+            continue
+        if isinstance(value, ast.Call) and _builds_node(value, builders, modules):
+            bound.update((t.id, value) for t in targets if isinstance(t, ast.Name))
+    return bound
+
+
+def _receiver(call: ast.Call) -> str:
+    """The name a parameter method is called on (``node`` of ``node.get_parameter()``)."""
+    func = call.func
+    if isinstance(func, ast.Attribute) and func.attr in PARAMETER_CALLS:
+        return getattr(func.value, "id", "")
+    return ""
+
+
+def _rclpy_bindings(tree: ast.Module) -> tuple[set[str], set[str]]:
+    """The names the module binds to rclpy's node builders (``from rclpy.node import
+    Node``) and to rclpy's modules (``import rclpy``, ``from rclpy import node``)."""
+    builders: set[str] = set()
+    modules: set[str] = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            modules |= {(a.asname or a.name).partition(".")[0] for a in node.names
+                        if a.name.partition(".")[0] == "rclpy"}  # fmt: skip
+        elif isinstance(node, ast.ImportFrom) and not node.level and node.module:
+            if node.module.partition(".")[0] != "rclpy":
+                continue
+            for alias in node.names:
+                named = builders if alias.name in PLAIN_NODES else modules
+                named.add(alias.asname or alias.name)
+    return builders, modules
+
+
+def _builds_node(call: ast.Call, builders: set[str], modules: set[str]) -> bool:
+    """``Node(...)`` of rclpy, ``rclpy.node.Node(...)``, ``rclpy.create_node(...)``."""
+    func = call.func
+    if isinstance(func, ast.Name):
+        return func.id in builders
+    if not (isinstance(func, ast.Attribute) and func.attr in PLAIN_NODES):
+        return False
+    root = func.value
+    while isinstance(root, ast.Attribute):
+        root = root.value
+    return isinstance(root, ast.Name) and root.id in modules
 
 
 def _calls(node: ast.AST, *, on_self: bool = False) -> frozenset[str]:
@@ -225,11 +324,17 @@ def selected(mirrors: Path, repo: str, branch: str | None) -> list[dict[str, str
                      if set(c.bases) & nodes and c.cls not in bases and _outside_tests(c.path)
                      and c.called & (PARAMETER_CALLS | helpers)),
                     key=lambda c: (c.path, c.cls))[:MOST_PER_REPOSITORY]  # fmt: skip
+    with_class = {c.path for c in chosen}
+    scripts = [script for path, text in sorted(texts.items())
+               if path.endswith(".py") and _outside_tests(path) and path not in with_class
+               and (script := _script(path, text)) is not None]  # fmt: skip
+    chosen += scripts[: MOST_PER_REPOSITORY - len(chosen)]
+    chosen.sort(key=lambda c: (c.path, c.cls))
     packages = {str(PurePosixPath(p).parent) for p in texts if p.endswith("package.xml")}
     entries = []
     for c in chosen:
         entry = {"repo": repo, "commit": commit, "file": c.path}
-        if sum(other.path == c.path for other in chosen) > 1:
+        if c.cls and sum(other.path == c.path for other in chosen) > 1:
             entry["class"] = c.cls
         params = _params_file(c.node_name, _package_of(c.path, packages), texts)
         if params:

@@ -55,7 +55,7 @@ def check_class(
     for name, param_json in described_parameters(described, values):
         spec = param_from_json(param_json, name)
         compiled = compile_param(spec)
-        if name not in values and (spec.optional or "when" in param_json):
+        if name not in values and (spec.optional or spec.when):
             # Not set (the services read it as "unset"), or left out by its condition.
             typed[name] = None
             continue

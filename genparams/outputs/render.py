@@ -13,7 +13,7 @@ from genparams._version import __version__
 from genparams.outputs import markup, module_layout
 from genparams.outputs.docs_model import DocsPage
 from genparams.outputs.params_file import ParamsFile
-from genparams.runtime import RUNTIME_API
+from genparams.runtime import RUNTIME_API, NoneOf
 from genparams.schema.model import Schema
 from genparams.schema.resources import resource_dir
 
@@ -61,6 +61,8 @@ def python_literal(value: Any) -> str:
     if isinstance(value, dict):
         items = ", ".join(f"{python_literal(k)}: {python_literal(v)}" for k, v in value.items())
         return "{" + items + "}"
+    if isinstance(value, NoneOf):  # a negated condition: the module imports it as _NoneOf
+        return f"_NoneOf({', '.join(python_literal(v) for v in value.values)})"
     raise TypeError(f"no Python literal for {type(value).__name__}")
 
 
@@ -104,6 +106,8 @@ def wrapped_literal(value: Any, indent: int, used: int, trailing: int) -> str:
     ``ruff format``.
     """
     flat = python_literal(value)
+    if isinstance(value, NoneOf) and used + markup.column_width(flat) + trailing > LINE_LENGTH:
+        return _call_lines(flat[: flat.index("(")], value.values, indent)
     container = _items(value)
     # ruff measures lines in columns: a wide character takes two, a combining mark none.
     if container is None or used + markup.column_width(flat) + trailing <= LINE_LENGTH:
@@ -114,6 +118,17 @@ def wrapped_literal(value: Any, indent: int, used: int, trailing: int) -> str:
     is_dict = opening == "{"
     lines = [f"{' ' * inner}{_item_literal(item, is_dict, inner)}," for item in items]
     return opening + "\n" + "\n".join(lines) + f"\n{' ' * indent}{closing}"
+
+
+def _call_lines(function: str, arguments: tuple[Any, ...], indent: int) -> str:
+    """A call too long for its line, as ruff splits it: every argument on one line of its
+    own when they fit there, else one argument a line with a trailing comma."""
+    inner = indent + 4
+    joined = ", ".join(python_literal(argument) for argument in arguments)
+    if len(arguments) == 1 or inner + markup.column_width(joined) <= LINE_LENGTH:
+        return f"{function}(\n{' ' * inner}{joined}\n{' ' * indent})"
+    lines = [f"{' ' * inner}{wrapped_literal(a, inner, inner, 1)}," for a in arguments]
+    return f"{function}(\n" + "\n".join(lines) + f"\n{' ' * indent})"
 
 
 # ruff splits a class header or an annotation too long for a line at brackets of its

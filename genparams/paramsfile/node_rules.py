@@ -23,7 +23,7 @@ from typing import Any
 
 from genparams.paramsfile.ros_yaml import absolute, node_matches, node_pattern_problem
 from genparams.runtime.core.changes import same_value
-from genparams.runtime.core.naming import NODE_TOKEN, is_ros_name
+from genparams.runtime.core.naming import NODE_TOKEN, attribute_parts, is_ros_name
 from genparams.runtime.core.rules import RuleError, compile_rule
 from genparams.schema.errors import Location, SchemaProblem
 
@@ -218,10 +218,11 @@ def _check_expression(rule: NodeRule, values: NodeValues) -> tuple[str | None, s
     absent = sorted({node for node, _ in found if node not in values})
     if absent:
         return None, f"not checked: {', '.join(absent)} not in this deployment"
-    unset = [f"{n}.{p}" for n, p in found if p not in values[n]]
+    held = {(n, p): held_name(values[n], p) for n, p in found}
+    unset = [f"{n}.{p}" for (n, p), name in held.items() if name is None]
     if unset:
         return f"cannot be checked: {', '.join(unset)} not set", None
-    read = {spelled(n, p): values[n][p] for n, p in found}
+    read = {spelled(n, p): values[n][name] for (n, p), name in held.items() if name is not None}
     types = {name: type_name(held.value) for name, held in read.items()}
     try:
         compiled = compile_rule(rule.name, _translated(rule.check), rule.description, types)
@@ -232,6 +233,17 @@ def _check_expression(rule: NodeRule, values: NodeValues) -> tuple[str | None, s
         return None, None
     places = ", ".join(_at(shown(name), held) for name, held in read.items() if held.place)
     return f"broken: {shown(failure)}" + (f" ({places})" if places else ""), None
+
+
+def held_name(node_values: Mapping[str, NodeValue], parameter: str) -> str | None:
+    """The name a node holds that a check's ``parameter`` reads: the name itself, else the
+    one name whose attribute spelling it is (``axes.twist_linear_x`` reads
+    ``axes.twist-linear-x``, ``input_shape_height`` reads ``input_shape/height``), as a
+    schema's rules read names; None when the node holds neither, or several such names."""
+    if parameter in node_values:
+        return parameter
+    spelled_so = [n for n in node_values if ".".join(attribute_parts(n)) == parameter]
+    return spelled_so[0] if len(spelled_so) == 1 else None
 
 
 def _at(name: str, held: NodeValue) -> str:

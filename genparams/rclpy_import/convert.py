@@ -9,7 +9,8 @@ A declaration by type only is ``optional``; ``dynamic_typing`` (or a name alone)
 is ``type: any``; one in a loop over a string_array parameter's value, named by the
 item, is a ``for_each`` leaf, and one named by the item and more
 (``f"gains.{joint}.p"``) a parameter of a mapped group keyed by that list; one under
-``if <parameter> == <literal>`` (or ``in``) has a ``when``. A node that declares what its
+``if <parameter> == <literal>`` (or ``in``, ``!=``, ``not in``, a bool's truth) has a
+``when``, and one in its ``else`` the negated ``when``. A node that declares what its
 params file names takes the parameters of the file's section (overrides_in.py).
 """
 
@@ -39,7 +40,7 @@ from genparams.rclpy_import.placing import (
     key_list,
     written_name,
 )
-from genparams.rclpy_import.scope import SharePath, unparsed
+from genparams.rclpy_import.scope import SharePath, run_time_problem, unparsed
 from genparams.schema.errors import Location, SchemaProblem
 
 
@@ -247,6 +248,11 @@ class _Converter:
             exact = False
         if found.via is not None:
             self.note(at, shown, f"declared by {found.via}")
+        if found.late is not None:
+            self.note(at, shown, f"declared when {found.late} runs, which no file read calls "
+                      "(a callback, or a method called from outside): the schema declares it "
+                      "with the others")  # fmt: skip
+            exact = False
         return exact
 
     def declaration(self, found: Found) -> Fate:
@@ -281,8 +287,8 @@ class _Converter:
             self.warn(at, "", f"the name {name!r} is not a string: parameter left out")
             return None
         if found.runtime_loop is None:
-            what = found.name.problem.what
-            self.warn(at, "", f"a name computed at run time ({what}): parameter left out")
+            what = run_time_problem(found.name.problem, "a name")
+            self.warn(at, "", f"{what}: parameter left out")
             return None
         place, reason = self.schema.per_item(found)
         if place is None:
@@ -308,8 +314,8 @@ class _Converter:
                 return None
         from_item = place is not None and place.tail and _computed_from_item(found)
         if found.value.problem is not None and not from_item:
-            self.warn(at, shown, f"value computed at run time ({found.value.problem.what}): "
-                      "parameter left out")  # fmt: skip
+            what = run_time_problem(found.value.problem, "value")
+            self.warn(at, shown, f"{what}: parameter left out")
             return None
         if place is not None and place.tail:
             problem = self.schema.entry_problem(place, key_list(found))

@@ -12,6 +12,7 @@ from genparams.rclpy_import.found import Found, Piece, SourceFile
 from genparams.rclpy_import.item_names import folded
 from genparams.rclpy_import.scope import Scope, UntranslatableError, unparsed
 from genparams.rclpy_import.values import Evaluator
+from genparams.runtime.core.conditions import KeyTest
 from genparams.schema.errors import Location
 
 SAMPLE_ITEM = "item"  # a loop's item, to type a value computed from it
@@ -29,7 +30,7 @@ class Context:
     literal_loop: ast.For | None = None
     loop_parameter: str | None = None
     loop_variable: str | None = None
-    when: tuple[str, tuple[Any, ...]] | None = None
+    when: tuple[str, KeyTest] | None = None
     loop_prefix: str | None = None
     loop_source: ast.AST | None = None
     via: str | None = None  # the helper, base class or object declaring for the node
@@ -38,6 +39,7 @@ class Context:
     # The variable of a loop over the node's own parameter names (``for name in
     # self._parameters``): a read of it reads a parameter declared already.
     own_name: str | None = None
+    late: str | None = None  # the method, when nothing read calls it
 
     def changed(self, **changes: Any) -> Context:
         return replace(self, **changes)
@@ -147,6 +149,7 @@ def _found(
         loop_prefix=context.loop_prefix,
         loop_source=context.loop_source,
         via=context.via,
+        late=context.late,
         **more,
     )
     if context.reads and found.value.problem is None:

@@ -10,6 +10,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from genparams.rclpy_import.scope import DescriptorValue, UntranslatableError
+from genparams.runtime.core.conditions import KeyTest
 from genparams.schema.errors import Location
 
 
@@ -62,10 +63,10 @@ class Found:
     # the loop variable.
     loop_parameter: str | None = None
     loop_variable: str | None = None
-    # The condition, when it is one ``if`` comparing one parameter's value with a literal
-    # (``==`` or ``in``) and the declaration sits in its body: the parameter and the
-    # values that declare it.
-    when: tuple[str, tuple[Any, ...]] | None = None
+    # The condition, when the ``if`` (and ``elif``) tests around the declaration compare one
+    # parameter's value with literals (``==``, ``!=``, ``in``, ``not in``, a truth test),
+    # the declaration in a body or an ``else``: the parameter and the test it must pass.
+    when: tuple[str, KeyTest] | None = None
     # The loop read at run time, when it is the only one and runs over the keys found under
     # a prefix in the overrides (see overrides.py): that prefix, and the by-prefix call or
     # ``_parameter_overrides`` attribute the keys come from.
@@ -82,6 +83,9 @@ class Found:
     # an object the node builds ("the helper self.get_param at node.py:12:9"); the patch
     # leaves it as written.
     via: str | None = None
+    # Declared by a method that nothing read calls (a callback, or one called from outside
+    # the files read, ``driver.get_frame_id()``): rclpy declares it when that runs.
+    late: str | None = None
 
     @property
     def receiver_is_self(self) -> bool:

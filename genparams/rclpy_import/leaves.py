@@ -8,7 +8,12 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from genparams.rclpy_import.found import Found, descriptor_of
-from genparams.rclpy_import.scope import DescriptorValue, RangeValue, TypeMarker
+from genparams.rclpy_import.scope import (
+    DescriptorValue,
+    RangeValue,
+    TypeMarker,
+    run_time_problem,
+)
 from genparams.runtime.core.types import INT64_MAX, INT64_MIN
 
 
@@ -22,8 +27,8 @@ class DescriptorCopy:
         """Copy the descriptor's fields into ``leaf``; False when part of it was lost (a
         warning says what)."""
         if found.descriptor.problem is not None:
-            what = found.descriptor.problem.what
-            self.lost.append(f"descriptor computed at run time ({what}): imported without it")
+            what = run_time_problem(found.descriptor.problem, "descriptor")
+            self.lost.append(f"{what}: imported without it")
             return False
         descriptor = descriptor_of(found)
         if found.descriptor.given and descriptor is None and found.descriptor.value is not None:

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import ast
 import difflib
+from collections.abc import Iterable
 from pathlib import Path
 
 from genparams.importing import LEFT_OUT
@@ -31,8 +32,10 @@ from genparams.rclpy_import.node_file import ImportedNode
 from genparams.rclpy_import.patch_shapes import (
     always_set,
     body_of,
+    declaring_branches,
     free_attribute,
     only_declares,
+    only_read_in,
     read_of,
     self_calls,
 )
@@ -141,6 +144,8 @@ class _Patcher:
                 removed = self.rewrite(statement, founds)
                 if statement is first:
                     removed_first = removed
+            self.drop_condition_variables(patchable)
+            removed_first = first in self.removed
             self.place_declare(first, declare, removed_first)
             self.drop_name_variables()
             self.fill_emptied(first if removed_first else None)
@@ -215,15 +220,19 @@ class _Patcher:
         return out
 
     def enclosing(self, found: Found, outcomes: dict[ast.stmt, list[str]]) -> ast.stmt | None:
-        """The loop over a parameter's value, or the ``if`` on one, around a declaration,
-        when it only declares parameters the schema now holds (per-item, conditional):
-        it goes whole."""
+        """The loop over a parameter's value, or the ``if`` on one (with its ``elif`` and
+        ``else`` branches), around a declaration, when it only declares parameters the
+        schema now holds (per-item, conditional): it goes whole."""
         parent = self.parents.get(found.statement)
-        if not isinstance(parent, (ast.For, ast.If)) or found.statement not in parent.body:
+        if not isinstance(parent, (ast.For, ast.If)) or found.statement not in (
+            parent.body + parent.orelse
+        ):
             return None
-        if not only_declares(parent):
-            return None
-        if any(LEFT_OUT in outcomes.get(s, [LEFT_OUT]) for s in parent.body):
+        above = self.parents.get(parent)
+        while isinstance(above, ast.If) and above.orelse == [parent]:  # parent is an elif
+            parent, above = above, self.parents.get(above)
+        statements = declaring_branches(parent)
+        if statements is None or any(LEFT_OUT in outcomes.get(s, [LEFT_OUT]) for s in statements):
             return None
         return parent
 
@@ -381,6 +390,23 @@ class _Patcher:
             ]  # fmt: skip
             if loads == [name] and assigned not in self.removed:
                 self.remove(assigned)
+
+    def drop_condition_variables(self, statements: Iterable[ast.stmt]) -> None:
+        """``mode = self.declare_parameter('mode', 'a').value`` read only by the ``if``
+        statements that went (the schema declares what they declared): it goes too."""
+        for statement in statements:
+            if statement in self.removed or not isinstance(statement, ast.Assign):
+                continue
+            target = statement.targets[0] if len(statement.targets) == 1 else None
+            function = self.parents.get(statement)
+            while function is not None and not isinstance(function, ast.FunctionDef):
+                function = self.parents.get(function)
+            if not isinstance(target, ast.Name) or function is None:
+                continue
+            if only_read_in(target.id, function, self.removed):
+                start, end = self.source.span(statement)
+                self.edits = [e for e in self.edits if not (start <= e.start and e.end <= end)]
+                self.remove(statement)
 
     def fill_emptied(self, keep: ast.stmt | None) -> None:
         """A block whose every statement was removed gets ``pass``."""

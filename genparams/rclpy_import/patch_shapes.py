@@ -56,17 +56,46 @@ def self_calls(root: ast.AST, method: str) -> Iterator[ast.Call]:
             yield node
 
 
-def only_declares(block: ast.For | ast.If) -> bool:
+def _declares(statement: ast.stmt) -> bool:
     return (
-        all(
-            isinstance(s, ast.Expr)
-            and isinstance(s.value, ast.Call)
-            and isinstance(s.value.func, ast.Attribute)
-            and s.value.func.attr.startswith("declare_parameter")
-            for s in block.body
-        )
-        and not block.orelse
+        isinstance(statement, ast.Expr)
+        and isinstance(statement.value, ast.Call)
+        and isinstance(statement.value.func, ast.Attribute)
+        and statement.value.func.attr.startswith("declare_parameter")
     )
+
+
+def declaring_branches(block: ast.For | ast.If) -> list[ast.stmt] | None:
+    """Every statement of a loop (without ``else``), or of an ``if`` with its ``elif`` and
+    ``else`` branches, when each declares a parameter; None when one does something else."""
+    statements = list(block.body)
+    rest = block.orelse
+    if isinstance(block, ast.For) and rest:
+        return None
+    if len(rest) == 1 and isinstance(rest[0], ast.If):  # an elif
+        inner = declaring_branches(rest[0])
+        if inner is None:
+            return None
+        statements += inner
+    else:
+        statements += rest
+    return statements if all(_declares(s) for s in statements) else None
+
+
+def only_declares(block: ast.For | ast.If) -> bool:
+    return declaring_branches(block) is not None
+
+
+def only_read_in(name: str, scope: ast.AST, removed: list[ast.stmt]) -> bool:
+    """Whether the variable ``name`` is read in ``scope``, each time inside a statement of
+    ``removed``."""
+    inside = {id(node) for statement in removed for node in ast.walk(statement)}
+    loads = [
+        node
+        for node in ast.walk(scope)
+        if isinstance(node, ast.Name) and node.id == name and isinstance(node.ctx, ast.Load)
+    ]
+    return bool(loads) and all(id(node) in inside for node in loads)
 
 
 def body_of(statement: ast.stmt, parents: dict[ast.AST, ast.AST]) -> list[ast.stmt] | None:

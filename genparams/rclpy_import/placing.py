@@ -12,6 +12,7 @@ from typing import Any
 from genparams.importing import attribute_clash
 from genparams.rclpy_import.found import Found
 from genparams.rclpy_import.leaves import condition_value
+from genparams.runtime.core.conditions import KeyTest, NoneOf, passes, tested_values, written_test
 from genparams.runtime.core.naming import ENTRY_KEY, NAME_RULE, NODE_PARAMETERS, is_ros_name
 from genparams.schema.shape import is_parameter
 
@@ -134,12 +135,12 @@ class SchemaTree:
     def when(self, found: Found) -> tuple[dict[str, Any] | None, str]:
         """The ``when:`` of a declaration under ``if``, or why it cannot have one."""
         simple = (
-            "only == or in against literals, or a bool's truth, of a parameter declared "
-            "before it translates"
+            "only ==, !=, in or not in against literals, or a bool's truth, of a parameter "
+            "declared before it translates, in its body or its else"
         )
         if found.when is None:
             return None, simple
-        name, values = found.when
+        name, test = found.when
         leaf = self.leaf(name) if name in self.first else None
         if leaf is None:
             return None, f"{name!r} is not a parameter imported before it"
@@ -149,13 +150,18 @@ class SchemaTree:
                 f"{name!r} must be a bool, int, double or string parameter with a value and "
                 "no condition of its own"
             )
-        kept = [condition_value(kind, v) for v in values]
+        kept = [condition_value(kind, v) for v in tested_values(test)]
         if any(v is None for v in kept):
             return None, (
                 f"a value compared with {name!r} is not a {kind} (a truth test translates "
                 "on a bool parameter only)"
             )
-        return {name: kept[0] if len(kept) == 1 else kept}, ""
+        kept_test: KeyTest = NoneOf(*kept) if isinstance(test, NoneOf) else tuple(kept)
+        if kind == "bool" and isinstance(kept_test, NoneOf):  # not true: false
+            kept_test = tuple(v for v in (True, False) if passes(kept_test, v))
+        if not tested_values(kept_test):
+            return None, f"no value of {name!r} passes the tests around it: it is never declared"
+        return {name: written_test(kept_test)}, ""
 
     def per_entry(self, name: str) -> bool:
         """Whether ``name`` is an entry of a per-item parameter or of a group

@@ -15,35 +15,57 @@ from genparams.rclpy_import.scope import (
     read_call,
 )
 from genparams.rclpy_import.values import Evaluator
+from genparams.runtime.core.conditions import KeyTest, NoneOf, both, negated
 
 DECLARE_ONE = "declare_parameter"
 DECLARE_MANY = "declare_parameters"
 _NESTED = (ast.Lambda, ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
 
 
-def condition_on(test: ast.expr, scope: Scope) -> tuple[str, tuple[Any, ...]] | None:
-    """``read == literal``, ``literal == read``, ``read in (literals)``, or a truth test
-    (``read``, ``not read``: true or false, which only a bool parameter compares equal
-    to): the parameter read and the values that make the test true; None for any other."""
-    negated = isinstance(test, ast.UnaryOp) and isinstance(test.op, ast.Not)
-    tested = parameter_read(test.operand if isinstance(test, ast.UnaryOp) else test, scope)
-    if tested is not None and (negated or not isinstance(test, ast.UnaryOp)):
-        return tested, (not negated,)
+def condition_on(test: ast.expr, scope: Scope) -> tuple[str, KeyTest] | None:
+    """``read == literal`` (or ``!=``), ``literal == read``, ``read in (literals)`` (or
+    ``not in``), a truth test (``read``: true, which only a bool parameter compares equal
+    to) or ``not`` of any of these: the parameter read and the test it passes (the values
+    that make the test true, or NoneOf the values that make it false); None for any other."""
+    if isinstance(test, ast.UnaryOp) and isinstance(test.op, ast.Not):
+        inner = condition_on(test.operand, scope)
+        return None if inner is None else (inner[0], negated(inner[1]))
+    tested = parameter_read(test, scope)
+    if tested is not None:
+        return tested, (True,)
     if not isinstance(test, ast.Compare) or len(test.ops) != 1:
         return None
     left, right, op = test.left, test.comparators[0], test.ops[0]
-    if isinstance(op, ast.Eq) and parameter_read(left, scope) is None:
+    if isinstance(op, (ast.Eq, ast.NotEq)) and parameter_read(left, scope) is None:
         left, right = right, left
     name = parameter_read(left, scope)
-    if name is None or not isinstance(op, (ast.Eq, ast.In)):
+    if name is None or not isinstance(op, (ast.Eq, ast.NotEq, ast.In, ast.NotIn)):
         return None
     try:
         value = Evaluator(scope).value(right)
     except UntranslatableError:
         return None
-    if isinstance(op, ast.Eq):
-        return name, (value,)
-    return (name, tuple(value)) if isinstance(value, (list, tuple)) and value else None
+    if isinstance(op, (ast.Eq, ast.NotEq)):
+        values: tuple[Any, ...] = (value,)
+    elif isinstance(value, (list, tuple)) and value:
+        values = tuple(value)
+    else:
+        return None
+    return name, (values if isinstance(op, (ast.Eq, ast.In)) else NoneOf(*values))
+
+
+def branch_condition(
+    outer: str | None, outer_when: tuple[str, KeyTest] | None, tested: tuple[str, KeyTest] | None
+) -> tuple[str, KeyTest] | None:
+    """The ``when`` of a branch whose own test is ``tested`` (negated for an ``else``),
+    inside the condition ``outer`` (None at the top) translated as ``outer_when``: the test,
+    or, in a branch of a test on the same parameter (an ``elif``, an ``if`` in an ``if``),
+    both tests in one; None when it cannot be a ``when``."""
+    if outer is None or tested is None:
+        return tested if outer is None else None
+    if outer_when is None or outer_when[0] != tested[0]:
+        return None
+    return tested[0], both(outer_when[1], tested[1])
 
 
 _MAX_READS = 4  # variables assigned from variables assigned from a read

@@ -45,12 +45,14 @@ class ModuleView:
     namespaces: dict[str, dict[str, Binding]] = field(default_factory=dict)
     classes: dict[str, ClassFound] = field(default_factory=dict)
     functions: dict[str, FunctionFound] = field(default_factory=dict)
+    outside: dict[str, str] = field(default_factory=dict)  # names from modules not read
 
     def scope(self) -> Scope:
         return Scope(
             module_constants=self.constants,
             namespaces=self.namespaces,
             functions={n: f.definition for n, f in self.functions.items()},
+            outside=self.outside,
         )
 
     def class_constants(self, cls: ast.ClassDef) -> dict[str, Binding]:
@@ -65,9 +67,25 @@ class Resolver:
     def __init__(self, package: Package) -> None:
         self.package = package
         self._views: dict[Path, ModuleView | None] = {}
+        self._called: tuple[int, frozenset[str]] | None = None  # (modules read, names)
+
+    def methods_called(self) -> frozenset[str]:
+        """The names called as ``x.name(...)`` in the modules read so far."""
+        if self._called is None or self._called[0] != len(self._views):
+            trees = [v.tree for v in self._views.values() if v is not None]
+            names = {
+                node.func.attr
+                for tree in trees
+                for node in ast.walk(tree)
+                if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
+            }
+            self._called = (len(self._views), frozenset(names))
+        return self._called[1]
 
     def node_view(self, path: Path, tree: ast.Module, source: SourceFile) -> ModuleView:
-        return self._build(path.resolve(), tree, source, 0)
+        view = self._build(path.resolve(), tree, source, 0)
+        self._views.setdefault(path.resolve(), view)
+        return view
 
     def chain(self, cls: ClassFound) -> list[ClassFound]:
         """The class and its base classes found in the package, nearest first."""
@@ -116,9 +134,8 @@ class Resolver:
 
     def _import_from(self, view: ModuleView, statement: ast.ImportFrom, depth: int) -> None:
         target = self.package.resolve(view.path, statement.module, statement.level)
-        if target is None:
-            return
-        other = self._view(target, depth + 1)
+        other = self._view(target, depth + 1) if target is not None else None
+        origin = "." * statement.level + (statement.module or "")
         for alias in statement.names:
             local = alias.asname or alias.name
             if alias.name == "*" and other is not None:
@@ -126,10 +143,12 @@ class Resolver:
                 continue
             if other is not None and _take(view, local, other, alias.name):
                 continue
-            sub = self.package.submodule(target, alias.name)
+            sub = self.package.submodule(target, alias.name) if target is not None else None
             inner = self._view(sub, depth + 1) if sub is not None else None
             if inner is not None:
                 _namespace(view, local, inner)
+            elif alias.name != "*":
+                view.outside[local] = origin
 
     def _import(self, view: ModuleView, statement: ast.Import, depth: int) -> None:
         for alias in statement.names:
@@ -137,6 +156,9 @@ class Resolver:
             other = self._view(target, depth + 1) if target is not None else None
             if other is not None:
                 _namespace(view, alias.asname or alias.name, other)
+            else:
+                local = alias.asname or alias.name.partition(".")[0]
+                view.outside[local] = alias.name if alias.asname else local
 
 
 def module_level(body: list[ast.stmt]) -> Iterator[ast.stmt]:

@@ -18,22 +18,24 @@ from typing import Any
 from genparams.rclpy_import.arguments import bound_arguments, class_scope
 from genparams.rclpy_import.declarations import Context, declare_many, declare_one, read
 from genparams.rclpy_import.found import Found, NodeOption, Unit
+from genparams.rclpy_import.loops import (
+    literal_bindings,
+    reads_own_parameter,
+    runtime_loop_context,
+)
 from genparams.rclpy_import.overrides import (
     BY_PREFIX,
     OVERRIDES,
-    keys_under,
-    over_own_parameters,
 )
 from genparams.rclpy_import.reads import (
     DECLARE_MANY,
     DECLARE_ONE,
     accessor,
-    bind,
+    branch_condition,
     calls_in,
     condition_on,
     is_main_guard,
     locals_of,
-    parameter_read,
     reads_one,
 )
 from genparams.rclpy_import.resolve import ClassFound, ModuleView, Resolver, lookup_class
@@ -52,8 +54,10 @@ from genparams.rclpy_import.shapes import (
     known_truth,
     super_called,
     super_init_call,
+    uncalled,
 )
 from genparams.rclpy_import.values import Evaluator
+from genparams.runtime.core.conditions import negated
 
 # Calls that change declared parameters after the fact: the schema cannot follow them.
 AFTERWARDS = {
@@ -164,7 +168,12 @@ class _Scanner:
                 inner_via = via
                 if depth > 0 and via is None:
                     inner_via = f"the base class {current.definition.name}"
-                context = Context(current.module.source, via=inner_via, call_site=site)
+                context = Context(
+                    current.module.source,
+                    via=inner_via,
+                    call_site=site,
+                    late=uncalled(statement, self.resolver.methods_called()),
+                )
                 bound: dict[str, Any] = {}
                 if statement.name == "__init__" and built is not None and caller is not None:
                     bound = bound_arguments(
@@ -231,13 +240,16 @@ class _Scanner:
             taken = known_truth(statement.test, scope)  # an argument given a bool
             self.walk(statement.body if taken else statement.orelse, scope, context)
         elif isinstance(statement, ast.If):
+            tested = condition_on(statement.test, scope)
             inner = context.changed(
                 condition=context.condition or f"if {unparsed(statement.test)}",
-                when=condition_on(statement.test, scope) if context.condition is None else None,
+                when=branch_condition(context.condition, context.when, tested),
             )
+            otherwise = tested and (tested[0], negated(tested[1]))
+            otherwise = branch_condition(context.condition, context.when, otherwise)
             self.expressions(statement.test, statement, scope, context)
             self.walk(statement.body, scope, inner)
-            self.walk(statement.orelse, scope, inner.changed(when=None))
+            self.walk(statement.orelse, scope, inner.changed(when=otherwise))
         elif isinstance(statement, (ast.Try, ast.TryStar)):
             self.walk(statement.body, scope, context)
             for handler in statement.handlers:
@@ -264,17 +276,7 @@ class _Scanner:
             self.expressions(statement, statement, scope, context)
 
     def loop(self, loop: ast.For | ast.AsyncFor, scope: Scope, context: Context) -> None:
-        items: Any = None
-        if isinstance(loop, ast.For) and context.runtime_loop is None:
-            try:
-                items = Evaluator(scope).value(loop.iter)
-            except UntranslatableError:
-                items = None
-        bindings = (
-            [bind(loop.target, item) for item in items]
-            if isinstance(items, (list, tuple))
-            else None
-        )
+        bindings = literal_bindings(loop, scope, context)
         if isinstance(loop, ast.For) and bindings is not None:
             inner = context.changed(literal_loop=context.literal_loop or loop)
             for binding in bindings:
@@ -282,22 +284,7 @@ class _Scanner:
                     self.walk(loop.body, scope.with_loop(binding), inner)
         else:
             self.reads_of_overrides(loop.iter, context)
-            targets = frozenset(n.id for n in ast.walk(loop.target) if isinstance(n, ast.Name))
-            first = context.runtime_loop is None and isinstance(loop.target, ast.Name)
-            keys = keys_under(loop.iter, scope) if first else None
-            inner = context.changed(
-                runtime_loop=context.runtime_loop or unparsed(loop.iter),
-                loop_targets=context.loop_targets | targets,
-                loop_parameter=parameter_read(loop.iter, scope) if first else None,
-                loop_variable=loop.target.id
-                if first and isinstance(loop.target, ast.Name)
-                else None,
-                loop_prefix=keys.prefix if keys is not None else None,
-                loop_source=keys.source if keys is not None else None,
-            )
-            if isinstance(loop.target, ast.Name) and over_own_parameters(loop.iter):
-                inner = inner.changed(own_name=loop.target.id)
-            self.walk(loop.body, scope, inner)
+            self.walk(loop.body, scope, runtime_loop_context(loop, scope, context))
         self.walk(loop.orelse, scope, context)
 
     def expressions(
@@ -308,7 +295,7 @@ class _Scanner:
         for call, nested in calls_in(root, None):
             inner = context.changed(nested=context.nested or nested)
             self.call(call, statement, scope, inner)
-            if reads_one(call) and not _reads_own(call, inner):
+            if reads_one(call) and not reads_own_parameter(call, inner):
                 if parents is None:
                     parents = {c: p for p in ast.walk(root) for c in ast.iter_child_nodes(p)}
                 kind = accessor(call, parents)
@@ -459,10 +446,3 @@ class _Scanner:
                 and node.func.attr == BY_PREFIX
             ):
                 self.option(node, context, f"{BY_PREFIX}()")
-
-
-def _reads_own(call: ast.Call, context: Context) -> bool:
-    """A read named by a loop's item over the node's own parameter names: of one it
-    declared already, not a parameter of its own."""
-    name = call.args[0] if call.args else None
-    return isinstance(name, ast.Name) and name.id == context.own_name

@@ -26,6 +26,23 @@ class UntranslatableError(GenparamsError):
         self.what = what
 
 
+class NotReadError(UntranslatableError):
+    """A name imported from a module outside the files read (another package, or a module
+    of the node's package when its file is read alone): its value is there, not here."""
+
+    def __init__(self, node: ast.AST, name: str, origin: str) -> None:
+        super().__init__(node, f"{name!r}, imported from {origin}, a module not read")
+        self.origin = origin
+
+
+def run_time_problem(problem: UntranslatableError, what: str) -> str:
+    """The words of a warning about a ``what`` (value, name, descriptor) that could not be
+    read: one computed at run time, or one defined in a module not read."""
+    if isinstance(problem, NotReadError):
+        return f"{what} defined outside the files read ({problem.what})"
+    return f"{what} computed at run time ({problem.what})"
+
+
 @dataclass(frozen=True)
 class TypeMarker:
     """``Parameter.Type.DOUBLE``: a type given instead of a value."""
@@ -92,6 +109,9 @@ class Scope:
     # Parameters declared before, with their values: a value read from one of them
     # (``[0.0] * len(self.get_parameter('joints').value)``) is computed from its default.
     parameters: Mapping[str, Any] = field(default_factory=dict)
+    # Names imported from modules the import does not read (``from ntrip_client.nmea_parser
+    # import NMEA_DEFAULT_MAX_LENGTH`` with the file read alone): where each comes from.
+    outside: Mapping[str, str] = field(default_factory=dict)
 
     def with_loop(self, bindings: Mapping[str, Any]) -> Scope:
         return replace(self, loop={**self.loop, **bindings})

@@ -170,3 +170,21 @@ def known_truth(test: ast.expr, scope: Scope) -> bool | None:
     if not isinstance(name, ast.Name) or not isinstance(scope.loop.get(name.id), bool):
         return None
     return scope.loop[name.id] is not negated
+
+
+# What rclpy's lifecycle node calls on each transition: a declaration there is made when
+# the node is configured, as a lifecycle node declares its class.
+LIFECYCLE_CALLBACKS = frozenset(
+    {"on_configure", "on_activate", "on_deactivate", "on_cleanup", "on_shutdown", "on_error"}
+)
+
+
+def uncalled(method: ast.FunctionDef | ast.AsyncFunctionDef, called: frozenset[str]) -> str | None:
+    """``name()`` for a method that nothing read calls (``get_frame_id``, called by
+    scripts outside the files read; a callback handed to a timer); None for the
+    constructor, one that is called, a decorated one (a property) and rclpy's
+    lifecycle callbacks."""
+    name = method.name
+    if name.startswith("__") or name in LIFECYCLE_CALLBACKS or method.decorator_list:
+        return None
+    return None if name in called else f"{name}()"

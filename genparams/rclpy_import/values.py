@@ -16,6 +16,7 @@ from collections.abc import Callable
 from dataclasses import replace
 from typing import Any
 
+from genparams.rclpy_import.limits import computable
 from genparams.rclpy_import.ros_names import (
     BINARY,
     DESCRIPTOR_FIELDS,
@@ -28,6 +29,7 @@ from genparams.rclpy_import.scope import (
     Binding,
     DescriptorValue,
     Elsewhere,
+    NotReadError,
     RangeValue,
     Scope,
     SharePath,
@@ -75,7 +77,6 @@ _FUNCTIONS: dict[str, Callable[..., Any]] = {
     "round": round,
 }
 _SHARE = "get_package_share_directory"
-_MAX_ITEMS = 4096  # a list repeated (``[0.0] * n``) is computed up to this length
 
 
 def evaluate_constant(expression: ast.expr, module: ast.Module | None = None) -> Any:
@@ -123,7 +124,7 @@ class Evaluator:
             left, right = self.value(node.left), self.value(node.right)
             if _repeated(node.op, left, right):
                 return left * right if isinstance(left, list) else right * left
-            if _same_kind(left, right) and not _too_large(node.op, left, right):
+            if _same_kind(left, right) and computable(node.op, left, right):
                 try:
                     result = BINARY[type(node.op)](left, right)
                 except (ArithmeticError, TypeError, ValueError):
@@ -167,6 +168,8 @@ class Evaluator:
             return self._assigned(assigned, node)
         if node.id in scope.module_constants:
             return self.bound(scope.module_constants[node.id])
+        if node.id in scope.outside:
+            raise NotReadError(node, node.id, scope.outside[node.id])
         raise UntranslatableError(node, f"the variable {node.id!r}")
 
     def _assigned(self, statement: ast.stmt, use: ast.Name) -> Any:
@@ -231,6 +234,8 @@ class Evaluator:
                     return self.value(assigned.value)
             if head == "self":
                 raise UntranslatableError(node, f"the attribute {name!r}")
+            if head in self.scope.outside:
+                raise NotReadError(node, name, self.scope.outside[head])
         raise UntranslatableError(node, f"the expression {unparsed(node)!r}")
 
     def _call(self, node: ast.Call) -> Any:
@@ -394,7 +399,8 @@ def _repeated(op: ast.operator, left: Any, right: Any) -> bool:
         isinstance(items, list)
         and isinstance(count, int)
         and not isinstance(count, bool)
-        and 0 <= count * len(items) <= _MAX_ITEMS
+        and count >= 0
+        and computable(op, items, count)
     )
 
 
@@ -408,8 +414,3 @@ def _same_kind(left: Any, right: Any) -> bool:
     if isinstance(left, str) and isinstance(right, str):
         return True
     return isinstance(left, list) and isinstance(right, list)
-
-
-def _too_large(op: ast.operator, left: Any, right: Any) -> bool:
-    """A power whose result could exhaust memory or time (``10 ** 10 ** 9``) is not computed."""
-    return isinstance(op, ast.Pow) and _is_number(right) and abs(right) > 64

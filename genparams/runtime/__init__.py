@@ -1,6 +1,7 @@
 """What generated modules import. Imports rclpy only when a class is declared on a node."""
 
 from genparams.runtime.core.changes import Change, Changes
+from genparams.runtime.core.conditions import NoneOf
 from genparams.runtime.core.errors import (
     DetachedSnapshotError,
     ParameterDeclarationError,
@@ -25,6 +26,7 @@ __all__ = [
     "DetachedSnapshotError",
     "Group",
     "GroupMap",
+    "NoneOf",
     "ParamOptions",
     "ParamSpec",
     "ParameterDeclarationError",

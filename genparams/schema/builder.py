@@ -13,6 +13,7 @@ from dataclasses import replace
 from typing import Any
 
 from genparams.runtime.core import naming
+from genparams.runtime.core.conditions import schema_condition
 from genparams.runtime.core.types import TYPES, ValueTypeError
 from genparams.runtime.core.validators import Custom
 from genparams.schema.errors import SchemaError, SchemaProblem
@@ -341,10 +342,7 @@ class _ModelBuilder:
             configure_only=leaf.get("configure_only", False),
             adopt=leaf.get("adopt", False),
             optional=optional,
-            when=tuple(
-                (str(name), tuple(value) if isinstance(value, list) else (value,))
-                for name, value in leaf.get("when", {}).items()
-            ),
+            when=schema_condition(leaf.get("when", {})),
         )
         # The runtime's own checks, compiled once: they judge the default here, and the
         # model keeps them to word each constraint in every output.

@@ -11,6 +11,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass, replace
 from typing import Any
 
+from genparams.runtime.core.conditions import Condition, NoneOf
 from genparams.runtime.core.naming import ENTRY_KEY, OVERRIDE_KEYS
 from genparams.runtime.core.param_spec import ParamSpec
 from genparams.runtime.core.spec import CompiledParam, EntryKeys, compile_param
@@ -62,8 +63,9 @@ class Parameter:
     keys_entries_of: str = ""
     optional: bool = False  # declared by type only: no value until an override or a set
     per_item_of: str = ""  # a per-item parameter (``offsets.*``): the list naming its entries
-    # Declared only when each named parameter holds one of its values: (("mode", ("a",)),)
-    when: tuple[tuple[str, tuple[Any, ...]], ...] = ()
+    # Declared only when each named parameter passes its test: (("mode", ("a",)),) holds
+    # one of the values, (("mode", NoneOf("a")),) none of them (see runtime conditions)
+    when: Condition = ()
 
     @property
     def annotation(self) -> str:
@@ -355,6 +357,12 @@ class Schema:
     def uses_any(self) -> bool:
         """Whether a parameter is of type ``any``, annotated with the runtime's RosValue."""
         return any(p.type.is_dynamic for p in self.parameters)
+
+    @property
+    def uses_none_of(self) -> bool:
+        """Whether a condition is negated (``when: {mode: {not: x}}``): the module then
+        imports the runtime's NoneOf; modules without one read exactly as before it."""
+        return any(isinstance(t, NoneOf) for p in self.parameters for _, t in p.when)
 
     @property
     def uses_entries_by_key(self) -> bool:

@@ -9,6 +9,7 @@ from collections.abc import Callable, Sequence
 from typing import Protocol
 
 from genparams.runtime.core import naming
+from genparams.runtime.core.conditions import NOT_KEY, NoneOf, tested_values
 from genparams.runtime.core.suggest import did_you_mean
 from genparams.runtime.core.types import ValueTypeError
 from genparams.schema.loader import Path
@@ -107,7 +108,7 @@ def check_conditions(
         if naming.ENTRY_KEY in param.path or param.aliases:
             what = "inside a mapped group" if naming.ENTRY_KEY in param.path else "with aliases"
             report(where, f"when is not supported {what}", at_key=True)
-        for name, values in param.when:
+        for name, test in param.when:
             target = fixed.get(name)
             at = (*where, name)
             if target is None:
@@ -126,7 +127,9 @@ def check_conditions(
                     at_key=True,
                 )
                 continue
-            for value in values:
+            if isinstance(test, NoneOf):
+                at = (*at, NOT_KEY)
+            for value in tested_values(test):
                 try:
                     target.type.coerce_default(value)
                 except ValueTypeError as exc:

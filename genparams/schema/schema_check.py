@@ -17,9 +17,15 @@ from genparams.schema.shape import TYPE_KEY
 
 
 @functools.cache
+def _meta_schema() -> dict[str, Any]:
+    text = (resource_dir("schemas") / "genparams.schema.json").read_text("utf-8")
+    schema: dict[str, Any] = json.loads(text)
+    return schema
+
+
+@functools.cache
 def _validator() -> jsonschema.Draft202012Validator:
-    schema = json.loads((resource_dir("schemas") / "genparams.schema.json").read_text("utf-8"))
-    return jsonschema.Draft202012Validator(schema)
+    return jsonschema.Draft202012Validator(_meta_schema())
 
 
 def check_document(document: LoadedDocument) -> list[SchemaProblem]:
@@ -68,6 +74,11 @@ def _problems(
             document.value_location(path), dotted(path), _validator_message(error.instance)
         )
         return
+    if error.validator == "anyOf" and schema == _meta_schema()["$defs"]["condition_values"]:
+        yield SchemaProblem(
+            document.value_location(path), dotted(path), _condition_message(path, error.instance)
+        )
+        return
     if not path and error.validator == "type":
         yield SchemaProblem(
             document.value_location(path),
@@ -101,6 +112,14 @@ def _type_namespace_hint(document: LoadedDocument, path: Path) -> str:
             "a parameter or namespace 'type')"
         )
     return ""
+
+
+def _condition_message(path: Path, instance: Any) -> str:
+    """Why a ``when`` value is not one: ``[]``, ``{not: []}``, a mapping in a list."""
+    values = "a value or a non-empty list of values (booleans, numbers or strings)"
+    if path[-1:] == ("not",):
+        return f"not takes {values}, got {_json(instance)}"
+    return f"a condition is {values}, or {{not: value or list}}, got {_json(instance)}"
 
 
 def _validator_message(instance: Any) -> str:

@@ -17,7 +17,8 @@ from genparams.launch.reader import read_launch
 
 HERE = Path(__file__).parent
 CORPUS = HERE / "corpus"
-PACKAGES = ("nav_stack", "nav2_controller", "rrbot_demo", "arm_moveit_config", "camera_driver")
+PACKAGES = ("nav_stack", "nav2_controller", "rrbot_demo", "arm_moveit_config", "camera_driver",
+            "fleet_bringup", "diff_driver")  # fmt: skip
 GIVEN = {name: CORPUS / name for name in PACKAGES}
 PACKAGE_ARGS = [a for name in PACKAGES for a in ("--package-path", f"{name}={CORPUS / name}")]
 

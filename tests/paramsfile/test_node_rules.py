@@ -199,3 +199,33 @@ def test_same_reads_a_name_holding_a_dash(
         f"max-speed differs across nodes: 1.0 on /a from {tmp_path / 'params.yaml'}:3:5 (/a); "
         f"2.0 on /b from {tmp_path / 'params.yaml'}:6:5 (/b)"
     )
+
+
+def test_a_check_reads_names_holding_dashes_and_slashes_by_their_attribute_spelling(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """``-`` in a check is a minus, so a check reads ``axes.twist-linear-x`` and
+    ``input_shape/height`` as a schema's rules do: ``axes.twist_linear_x``,
+    ``input_shape_height``. A name the node holds as written comes first; two names
+    spelled alike are read as neither."""
+    params = (
+        "/a:\n  ros__parameters:\n    axes: {twist-linear-x: 1}\n    input_shape/height: 480\n"
+        "    max-speed: 1.0\n    max_speed: 2.0\n    gain-x: 1.0\n    gain/x: 2.0\n"
+        "/b:\n  ros__parameters:\n    axes: {twist-linear-x: 2}\n    input_shape/height: 480\n"
+    )
+    rules = (
+        "  - {name: axes, check: /a.axes.twist_linear_x == /b.axes.twist_linear_x}\n"
+        "  - {name: shape, check: /a.input_shape_height == /b.input_shape_height}\n"
+        "  - {name: written, check: /a.max_speed == 2.0}\n"
+        "  - {name: alike, check: /a.gain_x == 1.0}\n"
+    )
+    code, out = run(capsys, *_files(tmp_path, params, rules))
+    assert code == 1
+    problems = [line.split(": ", 1)[1] for line in out if ": broken" in line or "cannot" in line]
+    assert problems == [
+        "axes: broken: /a.axes.twist_linear_x == /b.axes.twist_linear_x is false for "
+        f"/a.axes.twist_linear_x=1, /b.axes.twist_linear_x=2 (/a.axes.twist_linear_x from "
+        f"{tmp_path / 'params.yaml'}:3:12 (/a), /b.axes.twist_linear_x from "
+        f"{tmp_path / 'params.yaml'}:11:12 (/b))",
+        "alike: cannot be checked: /a.gain_x not set",
+    ]

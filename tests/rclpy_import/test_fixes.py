@@ -511,3 +511,85 @@ def test_reading_every_parameter_the_node_has_declares_nothing_more(
     assert code == 0 and "warning" not in err, err
     assert yaml.safe_load(out)["parameters"] == {"bowl": {"speed": {"type": "int", "default": 3}}}
     assert err.endswith("imported 1 of 1 parameters\n")
+
+
+_DRIVER = (
+    "from rclpy.node import Node\n\n\nclass Driver(Node):\n"
+    "    def __init__(self):\n"
+    "        super().__init__('driver')\n"
+    "        self.port = self.declare_parameter('port', '/dev/ttyUSB0').value\n"
+    "        self.create_timer(1.0, self.poll)\n"
+    "        self.check()\n\n"
+    "    def check(self):\n"
+    "        self.declare_parameter('strict', False)\n\n"
+    "    @property\n"
+    "    def baud(self):\n"
+    "        return self.declare_parameter('baud', 4800).value\n\n"
+    "    def on_configure(self, state):\n"
+    "        self.declare_parameter('retries', 3)\n\n"
+    "    def poll(self):\n"
+    "        self.declare_parameter('poll_rate', 2.0)\n\n"
+    "    def get_frame_id(self):\n"
+    "        return self.declare_parameter('frame_id', 'gps').value\n"
+)
+
+
+def test_a_method_nothing_read_calls_declares_approximately_with_a_note(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """rclpy declares ``frame_id`` when a script outside the files read calls
+    ``get_frame_id()``, and ``poll_rate`` when the timer first fires; the schema declares
+    them with the others, so they import approximately. A method the constructor calls,
+    a property and a lifecycle callback are not such methods; read with the script that
+    calls ``get_frame_id()``, ``frame_id`` is exact."""
+    package = tmp_path / "gps"
+    (package / "gps").mkdir(parents=True)
+    (package / "setup.py").write_text("", encoding="utf-8")
+    (package / "gps" / "__init__.py").write_text("", encoding="utf-8")
+    driver = package / "gps" / "driver.py"
+    driver.write_text(_DRIVER, encoding="utf-8")
+    code, out, err = run(capsys, str(driver))
+    assert code == 0, err
+    notes = {line.split(": ")[1] for line in err.splitlines() if "no file read calls" in line}
+    assert notes == {"poll_rate", "frame_id"}, err
+    assert "declared when get_frame_id() runs, which no file read calls" in err
+    assert err.endswith("imported 6 of 6 parameters (2 approximately)\n")
+    assert set(yaml.safe_load(out)["parameters"]) == {
+        "port", "strict", "baud", "retries", "poll_rate", "frame_id"
+    }  # fmt: skip
+    script = package / "gps" / "serial_node.py"
+    script.write_text(
+        "import rclpy\nfrom gps.driver import Driver\n\n\ndef main():\n"
+        "    rclpy.init()\n    driver = Driver()\n"
+        "    baud = driver.declare_parameter('line_baud', 9600).value\n"
+        "    frame = driver.get_frame_id()\n"
+        "    rclpy.spin(driver)\n",
+        encoding="utf-8",
+    )
+    code, out, err = run(capsys, str(script))
+    assert code == 0, err
+    notes = {line.split(": ")[1] for line in err.splitlines() if "no file read calls" in line}
+    assert notes == {"poll_rate"}, err
+    assert err.endswith("imported 7 of 7 parameters (1 approximately)\n")
+
+
+def test_values_too_large_to_work_out_are_left_to_run_time(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """The limits the launch reader keeps (one rule, genparams.rclpy_import.limits): a
+    power's exponent over 64 and a list repeated past 4096 items are not computed."""
+    node = tmp_path / "big.py"
+    node.write_text(
+        "class Big:\n    def __init__(self):\n"
+        "        self.declare_parameter('huge', 10 ** 10 ** 9)\n"
+        "        self.declare_parameter('long', [0.0] * 5000)\n"
+        "        self.declare_parameter('fine', [0.0] * 3 + [2.0 ** 10])\n",
+        encoding="utf-8",
+    )
+    code, out, err = run(capsys, str(node))
+    assert code == 1, err
+    assert "huge: warning: value computed at run time" in err
+    assert "long: warning: value computed at run time" in err
+    assert yaml.safe_load(out)["parameters"] == {
+        "fine": {"type": "double_array", "default": [0.0, 0.0, 0.0, 1024.0]}
+    }

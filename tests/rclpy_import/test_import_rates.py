@@ -10,6 +10,7 @@ from pathlib import Path
 import pytest
 
 from bench.import_rates import main
+from bench.import_rates_report import share_text
 
 DRIVER = """\
 import rclpy
@@ -93,3 +94,11 @@ def test_rows_and_totals_of_a_node_checked_on_real_nodes(
     assert cells[10] == "4 declared"
     assert "declared by the node's own run only: rate" in out  # the file alone lacks it
     assert "crashes: 0" in out
+
+
+@pytest.mark.parametrize(
+    ("part", "whole", "shown"),
+    [(245, 258, "245 of 258 (94.9%)"), (2, 3, "2 of 3 (66.6%)"), (0, 0, "0 of 0")],
+)
+def test_a_share_is_cut_to_one_decimal_never_rounded_up(part: int, whole: int, shown: str) -> None:
+    assert share_text(part, whole) == shown  # 94.96% is below a 95% target, and reads so

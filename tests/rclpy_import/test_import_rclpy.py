@@ -58,7 +58,7 @@ def test_every_untranslatable_construct_is_a_warning_at_its_place(
         "legacy_bridge.py:25:32: home: warning: value computed": "environment",
         "legacy_bridge.py:27:13: limit: warning: descriptor field description": "imported",
         "legacy_bridge.py:30:13: retries: warning: integer_range on a double": "imported",
-        "legacy_bridge.py:35:36: fast_mode: warning: declared only under": "== or in",
+        "legacy_bridge.py:35:36: fast_mode: warning: declared only under": "!=, in or not",
         "legacy_bridge.py:46:9: warning: set_descriptor() changes a descriptor": "declared one",
     }
     for start, word in expected.items():
@@ -251,17 +251,29 @@ if self.get_parameter('scale').value in [1, 2.5]:
 @pytest.mark.parametrize(
     "body, message",
     [
-        (  # an else branch: when cannot say "not"
-            "self.declare_parameter('on', True)\n"
-            "if self.get_parameter('on').value == True:\n    pass\n"
+        (  # the else of a test that does not translate
+            "self.declare_parameter('n', 1)\n"
+            "if self.get_parameter('n').value > 0:\n    pass\n"
             "else:\n    self.declare_parameter('x', 1)",
-            "declared only under a condition (if self.get_parameter('on').value == True): "
-            "only == or in",
+            "declared only under a condition (if self.get_parameter('n').value > 0): "
+            "only ==, !=, in or not in",
         ),
         (  # another comparison
             "self.declare_parameter('n', 1)\nif self.get_parameter('n').value > 0:\n"
             "    self.declare_parameter('x', 1)",
-            "only == or in",
+            "only ==, !=, in or not in",
+        ),
+        (  # an elif testing another parameter
+            "self.declare_parameter('n', 1)\nself.declare_parameter('m', 1)\n"
+            "if self.get_parameter('n').value == 1:\n    pass\n"
+            "elif self.get_parameter('m').value == 2:\n    self.declare_parameter('x', 1)",
+            "declared only under a condition (if self.get_parameter('n').value == 1): only",
+        ),
+        (  # a branch no value reaches
+            "self.declare_parameter('n', 1)\n"
+            "if self.get_parameter('n').value != 1:\n    pass\n"
+            "elif self.get_parameter('n').value == 2:\n    self.declare_parameter('x', 1)",
+            "no value of 'n' passes the tests around it: it is never declared",
         ),
         (  # a parameter not imported before
             "if self.get_parameter('later').value == 1:\n    self.declare_parameter('x', 1)\n"
@@ -281,7 +293,7 @@ if self.get_parameter('scale').value in [1, 2.5]:
         (  # a variable assigned twice
             "self.declare_parameter('n', 1)\nv = self.get_parameter('n').value\nv = 2\n"
             "if v == 1:\n    self.declare_parameter('x', 1)",
-            "only == or in",
+            "only ==, !=, in or not in",
         ),
         (  # a loop over a list that is not a string_array parameter
             "self.declare_parameter('ids', [1, 2])\n"

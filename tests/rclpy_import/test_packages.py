@@ -143,8 +143,53 @@ def test_files_outside_the_package_are_never_read(
     code = main(["import-rclpy", str(package / "node.py")])
     err = capsys.readouterr().err
     assert code == 1 and "never run" not in err
-    assert "rate: warning: value computed at run time (the variable 'RATE')" in err
-    assert "gain: warning: value computed at run time (the variable 'GAIN')" in err
+    outside_files = "value defined outside the files read"
+    assert f"rate: warning: {outside_files} ('RATE', imported from ..constants, a module" in err
+    assert f"gain: warning: {outside_files} ('GAIN', imported from .missing, a module" in err
+
+
+def test_a_file_read_alone_names_the_modules_its_defaults_come_from(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Read alone, a node's constants and class attributes from other modules of its
+    package cannot be read: each warning names the module to read, not a run-time value;
+    read in its package, they import."""
+    _write(
+        tmp_path,
+        {
+            "gps/setup.py": "",
+            "gps/gps/__init__.py": "",
+            "gps/gps/limits.py": "MAX_LENGTH = 82\nclass Client:\n    TIMEOUT = 4.0\n",
+            "gps/gps/node.py": (
+                "import gps.limits as lim\n"
+                "from gps.limits import MAX_LENGTH, Client\n"
+                "class N:\n    def __init__(self):\n"
+                "        self.declare_parameter('max_length', MAX_LENGTH)\n"
+                "        self.declare_parameter('timeout', Client.TIMEOUT)\n"
+                "        self.declare_parameter('min_length', lim.MAX_LENGTH // 2)\n"
+                "        self.declare_parameter('port', self.open_port())\n"
+                "        self.declare_parameter('frame', 'gps')\n"
+            ),
+        },
+    )
+    alone = tmp_path / "alone"
+    alone.mkdir()
+    (alone / "node.py").write_text((tmp_path / "gps/gps/node.py").read_text(), "utf-8")
+    assert main(["import-rclpy", str(alone / "node.py")]) == 1
+    err = capsys.readouterr().err
+    outside_files = "warning: value defined outside the files read"
+    assert (
+        f"max_length: {outside_files} ('MAX_LENGTH', imported from gps.limits, a module not read)"
+        in err
+    )
+    assert f"timeout: {outside_files} ('Client.TIMEOUT', imported from gps.limits" in err
+    assert f"min_length: {outside_files} ('lim.MAX_LENGTH', imported from gps.limits" in err
+    assert "port: warning: value computed at run time (a call of self.open_port())" in err
+    assert main(["import-rclpy", str(tmp_path / "gps/gps/node.py")]) == 1
+    err = capsys.readouterr().err
+    assert outside_files not in err
+    assert "port: warning: value computed at run time" in err
+    assert err.endswith("imported 4 of 5 parameters; 1 left out (see warnings)\n")
 
 
 def _write(root: Path, files: dict[str, str]) -> None:

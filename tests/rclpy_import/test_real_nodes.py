@@ -104,6 +104,7 @@ def test_every_case_is_counted() -> None:
         "camera_driver": (12, 0, 0),
         "fleet_monitor": (1, 2, 0),
         "key_teleop": (9, 0, 0),
+        "lease_client": (13, 0, 0),
         "legacy_bridge": (8, 2, 2),
         "pan_tilt": (5, 0, 0),
         "planner": (13, 0, 0),

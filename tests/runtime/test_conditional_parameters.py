@@ -6,6 +6,7 @@ The schema is the golden case tests/cases/conditional.
 
 from __future__ import annotations
 
+import pickle
 import types
 from typing import Any
 
@@ -15,13 +16,13 @@ from rclpy.parameter import Parameter
 
 from genparams.audit.findings import VIOLATION
 from genparams.live.graph import Graph
-from genparams.runtime import ParameterDeclarationError
+from genparams.runtime import NoneOf, ParameterDeclarationError, ParamSpec
 from tests.golden import CASES
 from tests.patience import WAIT_S
 from tests.runtime.served_node import audit_served, first_read, served
 from tests.support import RosHarness, import_file, unique_name
 
-NAMES = ("gain", "filter.window", "filter.kind")
+NAMES = ("gain", "filter.window", "filter.kind", "lease_rate", "device")
 
 
 @pytest.fixture(scope="module")
@@ -39,6 +40,10 @@ def by_hand(ros: RosHarness, args: list[str]) -> Node:
     if use_filter:
         node.declare_parameter("filter.window", 5)
         node.declare_parameter("filter.kind", Parameter.Type.STRING)
+    if mode != "expert":  # when: {mode: {not: expert}}
+        node.declare_parameter("lease_rate", 1.0)
+    if mode not in ("advanced", "expert") and not use_filter:
+        node.declare_parameter("device", "/dev/ttyUSB0")
     return node
 
 
@@ -48,6 +53,8 @@ def by_hand(ros: RosHarness, args: list[str]) -> Node:
         [],
         ["-p", "mode:=expert"],
         ["-p", "use_filter:=true", "-p", "filter.kind:=median", "-p", "gain:=3.0"],
+        ["-p", "mode:=advanced", "-p", "lease_rate:=4.0", "-p", "device:=/dev/ttyACM0"],
+        ["-p", "lease_rate:=4.0", "-p", "device:=/dev/ttyACM0"],
     ],
 )
 def test_declared_exactly_when_the_hand_written_node_declares(
@@ -58,7 +65,13 @@ def test_declared_exactly_when_the_hand_written_node_declares(
     hand = by_hand(ros, args)
     for name in NAMES:
         assert node.has_parameter(name) == hand.has_parameter(name), name
-    values = {"gain": cfg.gain, "filter.window": cfg.filter.window, "filter.kind": cfg.filter.kind}
+    values = {
+        "gain": cfg.gain,
+        "filter.window": cfg.filter.window,
+        "filter.kind": cfg.filter.kind,
+        "lease_rate": cfg.lease_rate,
+        "device": cfg.device,
+    }
     for name, value in values.items():
         assert (value is None) == (not node.has_parameter(name)), name
         unset: list[Any] = [0]  # rclpy gives a declared parameter's type as its int value
@@ -97,6 +110,9 @@ def test_defaults_and_remote(ros: RosHarness, module: types.ModuleType) -> None:
     assert cls.defaults({"mode": "expert"}).gain == 1.0
     with pytest.raises(ParameterDeclarationError, match="declared only when mode is"):
         cls.defaults({"gain": 1.0})
+    assert cls.defaults({"mode": "advanced"}).lease_rate == 1.0
+    with pytest.raises(ParameterDeclarationError, match="declared only when mode is not 'expert'"):
+        cls.defaults({"mode": "expert", "lease_rate": 2.0})
     target = ros.node(args=["-p", "mode:=advanced"])
     cfg = cls.declare(target)
     remote = cls.remote(ros.node(), target.get_fully_qualified_name())
@@ -104,6 +120,7 @@ def test_defaults_and_remote(ros: RosHarness, module: types.ModuleType) -> None:
     snapshot = ros.wait(remote.get())
     assert snapshot == cfg.snapshot()
     assert (snapshot.gain, snapshot.filter.window) == (1.0, None)
+    assert (snapshot.lease_rate, snapshot.device) == (1.0, None)
 
 
 def test_tune_and_audit(module: types.ModuleType) -> None:
@@ -116,5 +133,15 @@ def test_tune_and_audit(module: types.ModuleType) -> None:
     finally:
         graph.close()
     assert read["gain"] == 1.0 and "filter.window" not in read
+    assert "lease_rate" not in read and "device" not in read  # mode is expert: neither
     assert target in result.audited
     assert [f.text() for f in result.findings if f.kind == VIOLATION] == []
+
+
+def test_negated_conditions_in_words_and_across_processes() -> None:
+    spec = ParamSpec("port", "string", default="a", when=(("link", NoneOf("sim", "udp", "can")),))
+    assert spec.condition_text == "declared only when link is none of 'sim', 'udp' or 'can'"
+    assert not spec.declared_with({"link": "udp"}) and spec.declared_with({"link": "serial"})
+    copy = pickle.loads(pickle.dumps(spec))  # a record pickles by value
+    assert copy == spec and copy.when[0][1] == NoneOf("sim", "udp", "can")
+    assert not copy.declared_with({"link": "can"})

@@ -14,7 +14,11 @@ from typing import Any
 import pytest
 
 from genparams.runtime.core.json_codec import dumps
-from genparams.runtime.core.schema_message import SchemaProblem, read_schema_message
+from genparams.runtime.core.schema_message import (
+    SchemaProblem,
+    param_from_json,
+    read_schema_message,
+)
 from genparams.runtime.core.spec import compile_schema
 from genparams.runtime.node.schema_topic import class_text, node_message_text
 from tests.support import ROOT, load_generated
@@ -29,6 +33,7 @@ SCHEMAS = [
     ROOT / "tests/cases/mapped/schema.yaml",
     ROOT / "tests/cases/rules/schema.yaml",
     ROOT / "tests/cases/validators/schema.yaml",
+    ROOT / "tests/cases/conditional/schema.yaml",
 ]
 
 
@@ -116,6 +121,29 @@ BAD_EDITS: list[tuple[str, Edit, str]] = [
     ),
     ("no default", lambda m: m["classes"][0]["parameters"][0].pop("default"), "no 'default'"),
     ("rules as object", lambda m: m["classes"][0].update(rules={}), "rules: expected a list"),
+    ("when as a list", set_in_first_param(when=["gain"]), "(ceiling).when: expected a non-empty"),
+    ("when without tests", set_in_first_param(when={}), "(ceiling).when: expected a non-empty"),
+    ("a test of no values", set_in_first_param(when={"gain": []}), "when.gain: expected a non"),
+    (
+        "a negation of no values",
+        set_in_first_param(when={"gain": {"not": []}}),
+        "(ceiling).when.gain.not: expected a non-empty list of booleans, numbers or strings",
+    ),
+    (
+        "a negation with another key",
+        set_in_first_param(when={"gain": {"not": [1.0], "or": [2.0]}}),
+        "(ceiling).when.gain: a negated test is an object with only 'not'",
+    ),
+    (
+        "an object as a value",
+        set_in_first_param(when={"gain": [{"not": [1.0]}]}),
+        "(ceiling).when.gain: expected a non-empty list",
+    ),
+    (
+        "a condition on no parameter",
+        set_in_first_param(when={"nothing": {"not": [1.0]}}),
+        "classes[0]: 'ceiling': when names 'nothing', not a parameter",
+    ),
     (
         "a parameter outside the prefix",
         lambda m: m["classes"][0].update(prefix="arm"),
@@ -156,3 +184,25 @@ def test_hostile_text_is_a_problem(text: str, detail: str) -> None:
     assert isinstance(read, SchemaProblem)
     assert read.detail.startswith("schema message: ")
     assert detail in read.detail
+
+
+def test_conditions_read_back_as_the_node_declared_them(tmp_path: Path) -> None:
+    schema = ROOT / "tests/cases/conditional/schema.yaml"
+    read = read_schema_message(published_text(schema, tmp_path), NODE)
+    assert isinstance(read, dict), read
+    described = {p["name"]: p for p in read["classes"][0]["parameters"]}
+    assert described["gain"]["when"] == {"mode": ["advanced", "expert"]}
+    assert described["lease_rate"]["when"] == {"mode": {"not": ["expert"]}}
+    spec = next(
+        v._SPEC for v in vars(load_generated(schema, tmp_path)).values() if hasattr(v, "_SPEC")
+    )
+    declared = {param.name: param for param in spec.parameters}
+    for name, param in described.items():
+        reread = param_from_json(param, name)
+        assert reread.when == declared[name].when, name
+        for mode in ("basic", "advanced", "expert"):
+            values = {"mode": mode, "use_filter": False}
+            assert reread.declared_with(values) == declared[name].declared_with(values)
+    assert not param_from_json(described["lease_rate"], "lease_rate").declared_with(
+        {"mode": "expert"}
+    )

@@ -6,6 +6,7 @@ import itertools
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from typing import Any
 
+from genparams.runtime.core.conditions import controlling_names
 from genparams.runtime.core.naming import ENTRY_KEY, ENTRY_KEY_RULE, OVERRIDE_KEYS, is_entry_key
 from genparams.runtime.core.problems import ParameterProblem
 from genparams.runtime.core.records import Record, store
@@ -121,7 +122,11 @@ def expand(
 
 def _controlling(compiled: CompiledSchema) -> dict[str, CompiledParam]:
     """The parameters that conditions (``when``) read."""
-    names = {name for param in compiled.parameters.values() for name, _ in param.spec.when}
+    names = {
+        name
+        for param in compiled.parameters.values()
+        for name in controlling_names(param.spec.when)
+    }
     return {name: compiled.parameters[name] for name in names}
 
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
+from genparams.runtime.core.conditions import Condition, condition_holds, condition_text
 from genparams.runtime.core.records import Record, store
 
 
@@ -53,8 +54,9 @@ class ParamOptions(Record):
     adopt: bool
     # declared by type only: None (NOT_SET on the node) until given a value
     optional: bool
-    # declared only when each named parameter holds one of its values: (("mode", ("advanced",)),)
-    when: tuple[tuple[str, tuple[Any, ...]], ...]
+    # declared only when each named parameter passes its test (see conditions):
+    # (("mode", ("advanced",)),), (("mode", NoneOf("proxied")),)
+    when: Condition
 
     def __init__(
         self,
@@ -72,7 +74,7 @@ class ParamOptions(Record):
         configure_only: bool = False,
         adopt: bool = False,
         optional: bool = False,
-        when: tuple[tuple[str, tuple[Any, ...]], ...] = (),
+        when: Condition = (),
     ) -> None:
         store(self, "type", type)
         store(self, "required", required)
@@ -124,7 +126,7 @@ class ParamSpec(Record):
         configure_only: bool = False,
         adopt: bool = False,
         optional: bool = False,
-        when: tuple[tuple[str, tuple[Any, ...]], ...] = (),
+        when: Condition = (),
     ) -> None:
         store(self, "name", name)
         store(self, "default", default)
@@ -169,16 +171,12 @@ class ParamSpec(Record):
 
     def declared_with(self, values: Mapping[str, Any]) -> bool:
         """Whether the condition (``when``) holds for ``values``, by relative name."""
-        return all(values.get(name) in allowed for name, allowed in self.options.when)
+        return condition_holds(self.options.when, values)
 
     @property
     def condition_text(self) -> str:
         """``when`` in words: "declared only when mode is 'advanced'"."""
-        parts = [
-            f"{name} is {' or '.join(_value_words(value) for value in allowed)}"
-            for name, allowed in self.options.when
-        ]
-        return "declared only when " + " and ".join(parts) if parts else ""
+        return condition_text(self.options.when)
 
     # The shared options, read as the parameter's own fields.
     @property
@@ -238,12 +236,5 @@ class ParamSpec(Record):
         return self.options.optional
 
     @property
-    def when(self) -> tuple[tuple[str, tuple[Any, ...]], ...]:
+    def when(self) -> Condition:
         return self.options.when
-
-
-def _value_words(value: Any) -> str:
-    """A condition's value as a params file spells it: true, 2.5, 'advanced'."""
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    return repr(value)

@@ -14,6 +14,7 @@ from collections.abc import Collection, Mapping
 from dataclasses import dataclass
 from typing import Any
 
+from genparams.runtime.core.conditions import controlling_names, json_condition
 from genparams.runtime.core.errors import GenparamsError
 from genparams.runtime.core.json_codec import JsonError, Limits, loads
 from genparams.runtime.core.naming import ENTRY_KEY, strip_prefix
@@ -116,6 +117,7 @@ def param_from_json(described: Mapping[str, Any], name: str) -> ParamSpec:
         choices=None if described["choices"] is None else frozen(described["choices"]),
         validators=tuple((rule, frozen(arg)) for rule, arg in described["validators"]),
         aliases=tuple(described.get("aliases", ())),
+        when=json_condition(described["when"], "when") if "when" in described else (),
     )
 
 
@@ -123,7 +125,8 @@ def class_spec(described: Mapping[str, Any]) -> SchemaSpec:
     """One shape-checked class description as the spec it was declared from, names
     relative to its prefix: it compiles, with the runtime's compiler, to the node's checks.
 
-    Raises ValueError when a parameter is not under the class prefix.
+    Raises ValueError when a parameter is not under the class prefix, or its condition
+    (``when``) names no parameter of the class.
     """
     prefix = described["prefix"]
 
@@ -136,6 +139,11 @@ def class_spec(described: Mapping[str, Any]) -> SchemaSpec:
         return found
 
     params = [param_from_json(p, relative(p["name"])) for p in described["parameters"]]
+    fixed = {param.name for param in params}
+    for param in params:
+        for name in controlling_names(param.when):
+            if name not in fixed:
+                raise ValueError(f"{param.name!r}: when names {name!r}, not a parameter")
     groups: dict[str, type[Group]] = {}
     for param in params:  # every namespace that holds a fixed parameter
         parts = param.name.split(".")
@@ -200,7 +208,10 @@ def _check_parameter(described: dict[str, Any], where: str) -> None:
     if "optional" in described:
         _field(described, "optional", "bool", where)
     if "when" in described:
-        _field(described, "when", "object", where)
+        try:
+            json_condition(described["when"], f"{where}.when")
+        except ValueError as exc:
+            raise _ShapeError(str(exc)) from None
     if "default" not in described:
         raise _ShapeError(f"{where}: no 'default'")
     try:

@@ -25,6 +25,7 @@ from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any
 
 from genparams._version import __version__
+from genparams.runtime.core.conditions import condition_json
 from genparams.runtime.core.naming import ENTRY_KEY, join_prefix
 from genparams.runtime.core.records import Record, store
 from genparams.runtime.core.spec import CompiledParam, CompiledSchema
@@ -89,7 +90,7 @@ def describe_parameter(param: CompiledParam, name: str) -> dict[str, Any]:
     if spec.optional:  # only when true: messages of other schemas stay as they were
         described["optional"] = True
     if spec.when:
-        described["when"] = {name: json_value(values) for name, values in spec.when}
+        described["when"] = condition_json(spec.when)
     return described
 
 

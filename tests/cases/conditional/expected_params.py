@@ -17,6 +17,7 @@ if _runtime_api != 2:
     )
 
 from genparams.runtime import Group as _Group
+from genparams.runtime import NoneOf as _NoneOf
 from genparams.runtime import ParamOptions as _ParamOptions
 from genparams.runtime import Params as _Params
 from genparams.runtime import RuleSpec as _RuleSpec
@@ -43,13 +44,19 @@ class FilterGroup(_Group):
 class ConditionalParams(_Params):
     "Parameters declared only when another parameter has some value at start-up."
 
-    __slots__ = ("filter", "gain", "limit", "mode", "use_filter")
+    __slots__ = ("device", "filter", "gain", "lease_rate", "limit", "mode", "use_filter")
+
+    device: str | None
+    "device\n\nType: string. Default: '/dev/ttyUSB0'. Declared only when mode is neither 'advanced' nor 'expert' and use_filter is false."
 
     filter: FilterGroup
     "Namespace filter."
 
     gain: float | None
     "gain\n\nType: double. Default: 1.0. Declared only when mode is 'advanced' or 'expert'. Constraints: within [0.0, 10.0]."
+
+    lease_rate: float | None
+    "lease_rate\n\nType: double. Unit: Hz. Default: 1.0. Declared only when mode is not 'expert'."
 
     limit: float
     "limit\n\nType: double. Default: 2.0."
@@ -64,6 +71,10 @@ class ConditionalParams(_Params):
         "conditional",
         # Each distinct set of options once; every parameter names its set by index.
         (
+            _ParamOptions(
+                "string",
+                when=(("mode", _NoneOf("advanced", "expert")), ("use_filter", (False,))),
+            ),
             _ParamOptions(
                 "string",
                 required=True,
@@ -82,6 +93,11 @@ class ConditionalParams(_Params):
             ),
             _ParamOptions(
                 "double",
+                unit="Hz",
+                when=(("mode", _NoneOf("expert")),),
+            ),
+            _ParamOptions(
+                "double",
             ),
             _ParamOptions(
                 "string",
@@ -94,12 +110,14 @@ class ConditionalParams(_Params):
         ),
         # (name, default, index of its options)
         (
-            ("filter.kind", None, 0),
-            ("filter.window", 5, 1),
-            ("gain", 1.0, 2),
-            ("limit", 2.0, 3),
-            ("mode", "basic", 4),
-            ("use_filter", False, 5),
+            ("device", "/dev/ttyUSB0", 0),
+            ("filter.kind", None, 1),
+            ("filter.window", 5, 2),
+            ("gain", 1.0, 3),
+            ("lease_rate", 1.0, 4),
+            ("limit", 2.0, 5),
+            ("mode", "basic", 6),
+            ("use_filter", False, 7),
         ),
         groups={
             "filter": FilterGroup,
